@@ -1,0 +1,98 @@
+package geometries;
+
+import java.util.List;
+
+import primitives.Point3D;
+import primitives.Ray;
+
+import static primitives.Util.requireNonNull;
+
+/**
+ * Anything a ray can hit. Every query returns null, not an empty list, when the ray misses: the
+ * course's tests assert exactly that. Only points strictly ahead of the ray's start (t &gt; 0) count.
+ */
+public abstract class Intersectable {
+
+    /**
+     * An intersection point together with the geometry it lies on.
+     */
+    public static class GeoPoint {
+        /** The geometry hit. */
+        public final Geometry geometry;
+        /** The point hit. */
+        public final Point3D point;
+
+        /**
+         * Pairs a geometry with a point on it.
+         *
+         * @param geometry the geometry
+         * @param point    the point on it
+         */
+        public GeoPoint(Geometry geometry, Point3D point) {
+            this.geometry = geometry;
+            this.point = point;
+        }
+
+        /** Equal when they name the same geometry object and equal points. */
+        @Override
+        public boolean equals(Object obj) {
+            if (this == obj)
+                return true;
+            return obj instanceof GeoPoint other && geometry == other.geometry && point.equals(other.point);
+        }
+
+        @Override
+        public int hashCode() {
+            return System.identityHashCode(geometry) * 31 + point.hashCode();
+        }
+
+        @Override
+        public String toString() {
+            return "GeoPoint{" + geometry + " at " + point + "}";
+        }
+    }
+
+    /**
+     * Finds the points where a ray hits this object.
+     *
+     * @param ray the ray
+     * @return the points, nearest first for a single body, or null when the ray misses
+     */
+    public List<Point3D> findIntersections(Ray ray) {
+        List<GeoPoint> geoPoints = findGeoIntersections(ray);
+        return geoPoints == null ? null : geoPoints.stream().map(gp -> gp.point).toList();
+    }
+
+    /**
+     * Finds the points where a ray hits this object, with the geometry hit at each.
+     *
+     * @param ray the ray
+     * @return the intersections, or null when the ray misses
+     */
+    public final List<GeoPoint> findGeoIntersections(Ray ray) {
+        return findGeoIntersections(ray, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * Finds the points where a ray hits this object no farther than a distance from its start.
+     *
+     * @param ray         the ray
+     * @param maxDistance the largest distance from the ray's start that counts (positive)
+     * @return the intersections, or null when there is none within the distance
+     */
+    public final List<GeoPoint> findGeoIntersections(Ray ray, double maxDistance) {
+        requireNonNull(ray, "ray");
+        if (Double.isNaN(maxDistance) || maxDistance <= 0)
+            throw new IllegalArgumentException("maximum intersection distance must be positive, got " + maxDistance);
+        return findGeoIntersectionsHelper(ray, maxDistance);
+    }
+
+    /**
+     * The intersection search each kind of object implements; arguments are already checked.
+     *
+     * @param ray         the ray
+     * @param maxDistance the largest distance that counts
+     * @return the intersections, or null when there is none
+     */
+    protected abstract List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance);
+}

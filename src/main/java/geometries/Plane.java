@@ -1,0 +1,107 @@
+package geometries;
+
+import java.util.List;
+
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+import static primitives.Util.alignZero;
+import static primitives.Util.isZero;
+import static primitives.Util.requireNonNull;
+
+/**
+ * An infinite plane: a point on it and a unit normal.
+ */
+public class Plane extends Geometry {
+    private final Point3D q0;
+    private final Vector normal;
+
+    /**
+     * Creates a plane from a point on it and its normal.
+     *
+     * @param p0     a point on the plane
+     * @param normal the normal (any length; the plane keeps a unit copy)
+     */
+    public Plane(Point3D p0, Vector normal) {
+        this.q0 = requireNonNull(p0, "plane point");
+        this.normal = requireNonNull(normal, "plane normal").normalized();
+    }
+
+    /**
+     * Creates the plane through three points; the normal is (p2 − p1) × (p3 − p1), normalised.
+     *
+     * @param p1 first point
+     * @param p2 second point
+     * @param p3 third point
+     * @throws IllegalArgumentException when two points coincide or all three are collinear
+     */
+    public Plane(Point3D p1, Point3D p2, Point3D p3) {
+        this.q0 = requireNonNull(p1, "plane point p1");
+        this.normal = normalThrough(p1, requireNonNull(p2, "plane point p2"), requireNonNull(p3, "plane point p3"));
+    }
+
+    /**
+     * The unit normal of the plane through three points.
+     *
+     * @throws IllegalArgumentException when two points coincide or all three are collinear
+     */
+    static Vector normalThrough(Point3D p1, Point3D p2, Point3D p3) {
+        if (p1.equals(p2) || p2.equals(p3) || p1.equals(p3))
+            throw new IllegalArgumentException("plane points coincide: " + p1 + ", " + p2 + ", " + p3);
+        Vector v1 = p2.subtract(p1);
+        Vector v2 = p3.subtract(p1);
+        double cx = v1.getY() * v2.getZ() - v1.getZ() * v2.getY();
+        double cy = v1.getZ() * v2.getX() - v1.getX() * v2.getZ();
+        double cz = v1.getX() * v2.getY() - v1.getY() * v2.getX();
+        double crossLength = Math.sqrt(cx * cx + cy * cy + cz * cz);
+        if (isZero(crossLength / (v1.length() * v2.length())))
+            throw new IllegalArgumentException("plane points are collinear: " + p1 + ", " + p2 + ", " + p3);
+        return new Vector(cx / crossLength, cy / crossLength, cz / crossLength);
+    }
+
+    /** @return the point the plane was built from */
+    public Point3D getQ0() {
+        return q0;
+    }
+
+    /** @return the unit normal */
+    public Vector getNormal() {
+        return normal;
+    }
+
+    @Override
+    public Vector getNormal(Point3D point) {
+        return normal;
+    }
+
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        double t = intersectionDistance(ray);
+        return t > 0 && t <= maxDistance ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
+    }
+
+    /**
+     * The distance along a ray to this plane.
+     *
+     * @param ray the ray
+     * @return the distance, or 0 when the ray is parallel to the plane or starts on it, negative when
+     *         the plane is behind the ray
+     */
+    double intersectionDistance(Ray ray) {
+        Point3D p0 = ray.getP0();
+        Vector dir = ray.getDir();
+        double nv = alignZero(normal.dotProduct(dir));
+        if (nv == 0)
+            return 0;
+        double nq = normal.getX() * (q0.getX() - p0.getX())
+                + normal.getY() * (q0.getY() - p0.getY())
+                + normal.getZ() * (q0.getZ() - p0.getZ());
+        return alignZero(nq / nv);
+    }
+
+    @Override
+    public String toString() {
+        return "Plane{q0=" + q0 + ", normal=" + normal + "}";
+    }
+}

@@ -1,0 +1,167 @@
+package geometries;
+
+import java.util.List;
+
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+import static primitives.Util.isZero;
+import static primitives.Util.requireNonNull;
+
+/**
+ * A flat convex polygon. It is closed: a ray through an edge or a vertex hits it, so two polygons
+ * that share an edge leave no seam between them.
+ */
+public class Polygon extends Geometry {
+    /** Relative tolerance, in units of the polygon's size, for points on an edge. */
+    private static final double EDGE_TOLERANCE = 1e-9;
+
+    /** The vertices, in order around the polygon. */
+    protected final List<Point3D> vertices;
+    /** The plane the polygon lies in. */
+    protected final Plane plane;
+
+    /** Inward unit normals of the edges within the plane, three doubles per edge. */
+    private final double[] edgeNormals;
+    /** The largest edge length: the scale of the edge tolerance. */
+    private final double size;
+
+    /**
+     * Creates a polygon from its vertices, in order around it.
+     *
+     * @param vertices at least three points, coplanar, forming a convex polygon
+     * @throws IllegalArgumentException when there are fewer than three vertices, two neighbours
+     *                                  coincide, a vertex lies on the edge of its neighbours, or
+     *                                  the vertices are not coplanar or not convex
+     */
+    public Polygon(Point3D... vertices) {
+        if (vertices == null || vertices.length < 3)
+            throw new IllegalArgumentException("a polygon needs at least 3 vertices, got "
+                    + (vertices == null ? 0 : vertices.length));
+        for (int i = 0; i < vertices.length; ++i)
+            requireNonNull(vertices[i], "polygon vertex " + i);
+        this.vertices = List.of(vertices);
+        Vector[] edges = edgesOf(vertices);
+        this.size = maxLength(edges);
+        Vector normal = edges[0].crossProduct(edges[1]).normalize();
+        requireCoplanar(vertices, normal, size);
+        requireConvex(edges, normal);
+        this.plane = new Plane(vertices[0], normal);
+        this.edgeNormals = inwardEdgeNormals(edges, normal);
+    }
+
+    private static Vector[] edgesOf(Point3D[] vertices) {
+        int n = vertices.length;
+        Vector[] edges = new Vector[n];
+        for (int i = 0; i < n; ++i) {
+            Point3D next = vertices[(i + 1) % n];
+            if (next.equals(vertices[i]))
+                throw new IllegalArgumentException("polygon vertices " + i + " and " + (i + 1) % n + " coincide: " + next);
+            edges[i] = next.subtract(vertices[i]);
+        }
+        for (int i = 0; i < n; ++i) {
+            Vector e1 = edges[i];
+            Vector e2 = edges[(i + 1) % n];
+            double sin = crossLength(e1, e2) / (e1.length() * e2.length());
+            if (isZero(sin))
+                throw new IllegalArgumentException("polygon vertex " + (i + 1) % n + " " + vertices[(i + 1) % n]
+                        + " lies on the line of its neighbours' edge");
+        }
+        return edges;
+    }
+
+    private static double crossLength(Vector a, Vector b) {
+        double cx = a.getY() * b.getZ() - a.getZ() * b.getY();
+        double cy = a.getZ() * b.getX() - a.getX() * b.getZ();
+        double cz = a.getX() * b.getY() - a.getY() * b.getX();
+        return Math.sqrt(cx * cx + cy * cy + cz * cz);
+    }
+
+    private static double maxLength(Vector[] edges) {
+        double max = 0;
+        for (Vector edge : edges)
+            max = Math.max(max, edge.length());
+        return max;
+    }
+
+    private static void requireCoplanar(Point3D[] vertices, Vector normal, double size) {
+        for (int i = 3; i < vertices.length; ++i) {
+            double distance = vertices[i].subtract(vertices[0]).dotProduct(normal);
+            if (!isZero(distance / size))
+                throw new IllegalArgumentException("polygon vertices are not coplanar: vertex " + i + " "
+                        + vertices[i] + " is off the plane of the first three");
+        }
+    }
+
+    /**
+     * Every turn must go the same way around the normal, and the turns must add up to one full
+     * circle (a star whose turns all go one way winds around twice).
+     */
+    private static void requireConvex(Vector[] edges, Vector normal) {
+        double totalTurn = 0;
+        for (int i = 0; i < edges.length; ++i) {
+            Vector e1 = edges[i];
+            Vector e2 = edges[(i + 1) % edges.length];
+            double sin = e1.crossProduct(e2).dotProduct(normal);
+            if (sin <= 0)
+                throw new IllegalArgumentException("polygon is not convex: it turns the other way at vertex " + (i + 1) % edges.length);
+            totalTurn += Math.atan2(sin, e1.dotProduct(e2));
+        }
+        if (Math.abs(totalTurn - 2 * Math.PI) > 1e-6)
+            throw new IllegalArgumentException("polygon is not convex: its edges cross each other");
+    }
+
+    private static double[] inwardEdgeNormals(Vector[] edges, Vector normal) {
+        double[] normals = new double[edges.length * 3];
+        for (int i = 0; i < edges.length; ++i) {
+            Vector inward = normal.crossProduct(edges[i]).normalize();
+            normals[3 * i] = inward.getX();
+            normals[3 * i + 1] = inward.getY();
+            normals[3 * i + 2] = inward.getZ();
+        }
+        return normals;
+    }
+
+    /** @return the vertices, in order */
+    public List<Point3D> getVertices() {
+        return vertices;
+    }
+
+    /** @return the plane the polygon lies in */
+    public Plane getPlane() {
+        return plane;
+    }
+
+    @Override
+    public Vector getNormal(Point3D point) {
+        return plane.getNormal();
+    }
+
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        double t = plane.intersectionDistance(ray);
+        if (!(t > 0 && t <= maxDistance))
+            return null;
+        Point3D p0 = ray.getP0();
+        Vector dir = ray.getDir();
+        double px = p0.getX() + t * dir.getX();
+        double py = p0.getY() + t * dir.getY();
+        double pz = p0.getZ() + t * dir.getZ();
+        double tolerance = -EDGE_TOLERANCE * size;
+        for (int i = 0; i < vertices.size(); ++i) {
+            Point3D v = vertices.get(i);
+            double inside = (px - v.getX()) * edgeNormals[3 * i]
+                    + (py - v.getY()) * edgeNormals[3 * i + 1]
+                    + (pz - v.getZ()) * edgeNormals[3 * i + 2];
+            if (inside < tolerance)
+                return null;
+        }
+        return List.of(new GeoPoint(this, new Point3D(px, py, pz)));
+    }
+
+    @Override
+    public String toString() {
+        return "Polygon" + vertices;
+    }
+}

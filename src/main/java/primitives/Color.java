@@ -1,0 +1,124 @@
+package primitives;
+
+import static primitives.Util.requireNonNegative;
+import static primitives.Util.requirePositive;
+
+/**
+ * An immutable RGB colour with non-negative double components on the 0..255 scale; components may
+ * exceed 255 while light adds up and are clamped only when converted to {@link java.awt.Color}.
+ */
+public class Color {
+    /** Black: no light. */
+    public static final Color BLACK = new Color(0, 0, 0);
+
+    private final double r;
+    private final double g;
+    private final double b;
+
+    /**
+     * Creates a colour from its components.
+     *
+     * @param r red, 0 or more
+     * @param g green, 0 or more
+     * @param b blue, 0 or more
+     * @throws IllegalArgumentException for a negative, NaN or infinite component
+     */
+    public Color(double r, double g, double b) {
+        this.r = requireNonNegative(r, "red component");
+        this.g = requireNonNegative(g, "green component");
+        this.b = requireNonNegative(b, "blue component");
+    }
+
+    /**
+     * Creates a colour from an AWT colour.
+     *
+     * @param other the AWT colour
+     */
+    public Color(java.awt.Color other) {
+        this(Util.requireNonNull(other, "colour").getRed(), other.getGreen(), other.getBlue());
+    }
+
+    /** @return the red component */
+    public double getR() {
+        return r;
+    }
+
+    /** @return the green component */
+    public double getG() {
+        return g;
+    }
+
+    /** @return the blue component */
+    public double getB() {
+        return b;
+    }
+
+    /**
+     * Adds colours to this one.
+     *
+     * @param colors the colours to add
+     * @return the new colour, the component-wise sum
+     */
+    public Color add(Color... colors) {
+        double rr = r;
+        double rg = g;
+        double rb = b;
+        for (Color c : colors) {
+            rr += c.r;
+            rg += c.g;
+            rb += c.b;
+        }
+        return new Color(rr, rg, rb);
+    }
+
+    /**
+     * Scales the colour.
+     *
+     * @param k the factor, 0 or more
+     * @return the new colour
+     * @throws IllegalArgumentException for a negative or non-finite factor
+     */
+    public Color scale(double k) {
+        requireNonNegative(k, "colour scale factor");
+        return new Color(r * k, g * k, b * k);
+    }
+
+    /**
+     * Divides the colour.
+     *
+     * @param k the divisor, positive
+     * @return the new colour
+     * @throws IllegalArgumentException for a divisor that is not positive
+     */
+    public Color reduce(double k) {
+        requirePositive(k, "colour reduce divisor");
+        return new Color(r / k, g / k, b / k);
+    }
+
+    /** @return the AWT colour, each component truncated to an integer and clamped to 0..255 */
+    public java.awt.Color getColor() {
+        return new java.awt.Color(clamp(r), clamp(g), clamp(b));
+    }
+
+    private static int clamp(double component) {
+        return (int) Math.min(255, component);
+    }
+
+    @Override
+    public boolean equals(Object obj) {
+        if (this == obj)
+            return true;
+        return obj instanceof Color other
+                && Util.isZero(r - other.r) && Util.isZero(g - other.g) && Util.isZero(b - other.b);
+    }
+
+    @Override
+    public int hashCode() {
+        return 41;
+    }
+
+    @Override
+    public String toString() {
+        return "rgb(" + r + ", " + g + ", " + b + ")";
+    }
+}

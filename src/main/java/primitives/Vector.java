@@ -1,0 +1,172 @@
+package primitives;
+
+import static primitives.Util.isZero;
+import static primitives.Util.requireFinite;
+
+/**
+ * A non-zero vector in 3D space. Every operation returns a new vector; the one exception is
+ * {@link #normalize()}, which normalises the vector itself.
+ */
+public class Vector {
+    double x;
+    double y;
+    double z;
+
+    /**
+     * Creates a vector from its components.
+     *
+     * @param x the x component
+     * @param y the y component
+     * @param z the z component
+     * @throws IllegalArgumentException for the zero vector or a NaN or infinite component
+     */
+    public Vector(double x, double y, double z) {
+        this.x = requireFinite(x, "vector x component");
+        this.y = requireFinite(y, "vector y component");
+        this.z = requireFinite(z, "vector z component");
+        if (isZero(x) && isZero(y) && isZero(z))
+            throw new IllegalArgumentException("zero vector is not allowed");
+    }
+
+    /**
+     * Creates the vector from the origin to a point.
+     *
+     * @param head the vector's head
+     * @throws IllegalArgumentException when the head is the origin (zero vector)
+     */
+    public Vector(Point3D head) {
+        this(head.x, head.y, head.z);
+    }
+
+    /** @return the x component */
+    public double getX() {
+        return x;
+    }
+
+    /** @return the y component */
+    public double getY() {
+        return y;
+    }
+
+    /** @return the z component */
+    public double getZ() {
+        return z;
+    }
+
+    /** @return the vector's head, the point it reaches from the origin */
+    public Point3D getHead() {
+        return new Point3D(x, y, z);
+    }
+
+    /**
+     * Vector sum.
+     *
+     * @param other the vector to add
+     * @return the new vector (this + other)
+     * @throws IllegalArgumentException when the sum is the zero vector
+     */
+    public Vector add(Vector other) {
+        return new Vector(x + other.x, y + other.y, z + other.z);
+    }
+
+    /**
+     * Vector difference.
+     *
+     * @param other the vector to subtract
+     * @return the new vector (this − other)
+     * @throws IllegalArgumentException when the difference is the zero vector
+     */
+    public Vector subtract(Vector other) {
+        return new Vector(x - other.x, y - other.y, z - other.z);
+    }
+
+    /**
+     * Multiplies the vector by a scalar.
+     *
+     * @param scalar the factor
+     * @return the new vector
+     * @throws IllegalArgumentException when the factor is zero (zero vector) or not finite
+     */
+    public Vector scale(double scalar) {
+        if (isZero(scalar))
+            throw new IllegalArgumentException("scaling by zero gives the zero vector");
+        return new Vector(x * scalar, y * scalar, z * scalar);
+    }
+
+    /**
+     * Dot product.
+     *
+     * @param other the other vector
+     * @return this · other
+     */
+    public double dotProduct(Vector other) {
+        return x * other.x + y * other.y + z * other.z;
+    }
+
+    /**
+     * Cross product.
+     *
+     * @param other the other vector
+     * @return the new vector this × other
+     * @throws IllegalArgumentException when the vectors are parallel (zero vector)
+     */
+    public Vector crossProduct(Vector other) {
+        double cx = y * other.z - z * other.y;
+        double cy = z * other.x - x * other.z;
+        double cz = x * other.y - y * other.x;
+        if (isZero(cx) && isZero(cy) && isZero(cz))
+            throw new IllegalArgumentException("cross product of parallel vectors is the zero vector");
+        return new Vector(cx, cy, cz);
+    }
+
+    /** @return the squared length */
+    public double lengthSquared() {
+        return x * x + y * y + z * z;
+    }
+
+    /** @return the length */
+    public double length() {
+        return Math.sqrt(lengthSquared());
+    }
+
+    /**
+     * Normalises this vector in place: the one operation that changes a vector.
+     *
+     * @return this vector, now of unit length
+     */
+    public Vector normalize() {
+        double length = length();
+        x /= length;
+        y /= length;
+        z /= length;
+        return this;
+    }
+
+    /** @return a new unit vector in the direction of this one */
+    public Vector normalized() {
+        double length = length();
+        return new Vector(x / length, y / length, z / length);
+    }
+
+    /**
+     * Two vectors are equal when every component agrees within the library's tolerance.
+     */
+    @Override
+    public boolean equals(Object obj) {
+        if (this == obj)
+            return true;
+        return obj instanceof Vector other
+                && isZero(x - other.x) && isZero(y - other.y) && isZero(z - other.z);
+    }
+
+    /** A constant, for the same reason as {@link Point3D#hashCode()}: equality is tolerant. */
+    @Override
+    public int hashCode() {
+        return 37;
+    }
+
+    @Override
+    public String toString() {
+        return "->(" + x + ", " + y + ", " + z + ")";
+    }
+}
