@@ -27,10 +27,11 @@ public abstract class Intersectable {
          *
          * @param geometry the geometry
          * @param point    the point on it
+         * @throws IllegalArgumentException when the point is null
          */
         public GeoPoint(Geometry geometry, Point3D point) {
             this.geometry = geometry;
-            this.point = point;
+            this.point = requireNonNull(point, "intersection point");
         }
 
         /** Equal when they name the same geometry object and equal points. */

@@ -66,7 +66,7 @@ public class Polygon extends Geometry {
             double sin = crossLength(e1, e2) / (e1.length() * e2.length());
             if (isZero(sin))
                 throw new IllegalArgumentException("polygon vertex " + (i + 1) % n + " " + vertices[(i + 1) % n]
-                        + " lies on the line of its neighbours' edge");
+                        + " lies on the line of its neighbours' edge (three consecutive vertices are collinear)");
         }
         return edges;
     }

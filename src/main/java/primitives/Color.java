@@ -58,12 +58,15 @@ public class Color {
      *
      * @param colors the colours to add
      * @return the new colour, the component-wise sum
+     * @throws IllegalArgumentException when the array or one of the colours is null
      */
     public Color add(Color... colors) {
+        Util.requireNonNull(colors, "colours to add");
         double rr = r;
         double rg = g;
         double rb = b;
         for (Color c : colors) {
+            Util.requireNonNull(c, "colour to add");
             rr += c.r;
             rg += c.g;
             rb += c.b;

@@ -2,6 +2,7 @@ package primitives;
 
 import static primitives.Util.isZero;
 import static primitives.Util.requireFinite;
+import static primitives.Util.requireNonNull;
 
 /**
  * An immutable point in 3D Cartesian space.
@@ -48,8 +49,10 @@ public class Point3D {
      *
      * @param vector the displacement
      * @return the new point
+     * @throws IllegalArgumentException when the vector is null or the result is not finite
      */
     public Point3D add(Vector vector) {
+        requireNonNull(vector, "vector to add");
         return new Point3D(x + vector.x, y + vector.y, z + vector.z);
     }
 
@@ -58,9 +61,10 @@ public class Point3D {
      *
      * @param other the tail of the vector
      * @return the vector (this − other)
-     * @throws IllegalArgumentException when the points coincide (zero vector)
+     * @throws IllegalArgumentException when the points coincide (zero vector) or the point is null
      */
     public Vector subtract(Point3D other) {
+        requireNonNull(other, "point to subtract");
         return new Vector(x - other.x, y - other.y, z - other.z);
     }
 
@@ -69,8 +73,10 @@ public class Point3D {
      *
      * @param other the other point
      * @return the squared distance
+     * @throws IllegalArgumentException when the other point is null
      */
     public double distanceSquared(Point3D other) {
+        requireNonNull(other, "other point");
         double dx = x - other.x;
         double dy = y - other.y;
         double dz = z - other.z;
@@ -82,6 +88,7 @@ public class Point3D {
      *
      * @param other the other point
      * @return the distance
+     * @throws IllegalArgumentException when the other point is null
      */
     public double distance(Point3D other) {
         return Math.sqrt(distanceSquared(other));

@@ -29,8 +29,9 @@ public class Ray {
     }
 
     /**
-     * Creates a secondary ray from a surface point: the head moves {@link #DELTA} along the normal,
-     * toward the side of the surface the direction points to.
+     * Creates a secondary ray from a surface point: the head moves the distance {@link #DELTA} along
+     * the normal (whatever the normal's length), toward the side of the surface the direction points
+     * to; it stays put when the direction is orthogonal to the normal.
      *
      * @param head      the surface point
      * @param direction the ray's direction
@@ -41,7 +42,7 @@ public class Ray {
         requireNonNull(direction, "ray direction");
         requireNonNull(normal, "surface normal");
         double nv = alignZero(normal.dotProduct(direction));
-        this.p0 = nv == 0 ? head : head.add(normal.scale(nv > 0 ? DELTA : -DELTA));
+        this.p0 = nv == 0 ? head : head.add(normal.scale((nv > 0 ? DELTA : -DELTA) / normal.length()));
         this.dir = direction.normalized();
     }
 

@@ -2,6 +2,7 @@ package primitives;
 
 import static primitives.Util.isZero;
 import static primitives.Util.requireFinite;
+import static primitives.Util.requireNonNull;
 
 /**
  * A non-zero vector in 3D space. Every operation returns a new vector; the one exception is
@@ -32,10 +33,10 @@ public class Vector {
      * Creates the vector from the origin to a point.
      *
      * @param head the vector's head
-     * @throws IllegalArgumentException when the head is the origin (zero vector)
+     * @throws IllegalArgumentException when the head is the origin (zero vector) or null
      */
     public Vector(Point3D head) {
-        this(head.x, head.y, head.z);
+        this(requireNonNull(head, "vector head").x, head.y, head.z);
     }
 
     /** @return the x component */
@@ -63,9 +64,10 @@ public class Vector {
      *
      * @param other the vector to add
      * @return the new vector (this + other)
-     * @throws IllegalArgumentException when the sum is the zero vector
+     * @throws IllegalArgumentException when the sum is the zero vector or the other vector is null
      */
     public Vector add(Vector other) {
+        requireNonNull(other, "vector to add");
         return new Vector(x + other.x, y + other.y, z + other.z);
     }
 
@@ -74,9 +76,10 @@ public class Vector {
      *
      * @param other the vector to subtract
      * @return the new vector (this − other)
-     * @throws IllegalArgumentException when the difference is the zero vector
+     * @throws IllegalArgumentException when the difference is the zero vector or the other vector is null
      */
     public Vector subtract(Vector other) {
+        requireNonNull(other, "vector to subtract");
         return new Vector(x - other.x, y - other.y, z - other.z);
     }
 
@@ -98,8 +101,10 @@ public class Vector {
      *
      * @param other the other vector
      * @return this · other
+     * @throws IllegalArgumentException when the other vector is null
      */
     public double dotProduct(Vector other) {
+        requireNonNull(other, "other vector");
         return x * other.x + y * other.y + z * other.z;
     }
 
@@ -108,9 +113,10 @@ public class Vector {
      *
      * @param other the other vector
      * @return the new vector this × other
-     * @throws IllegalArgumentException when the vectors are parallel (zero vector)
+     * @throws IllegalArgumentException when the vectors are parallel (zero vector) or the other vector is null
      */
     public Vector crossProduct(Vector other) {
+        requireNonNull(other, "other vector");
         double cx = y * other.z - z * other.y;
         double cy = z * other.x - x * other.z;
         double cz = x * other.y - y * other.x;

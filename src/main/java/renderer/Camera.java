@@ -127,7 +127,8 @@ public class Camera {
      * @param dx the point's offset from the pixel's left edge, as a fraction of its width (0..1)
      * @param dy the point's offset from the pixel's top edge, as a fraction of its height (0..1)
      * @return the ray from the camera through that point
-     * @throws IllegalArgumentException       for a non-positive image size or a pixel outside it
+     * @throws IllegalArgumentException       for a non-positive image size, a pixel outside it, or an
+     *                                        offset outside 0..1
      * @throws MissingResourceException when the view plane size or distance was not set
      */
     public Ray constructRayThroughPixel(int nX, int nY, int j, int i, double dx, double dy) {
@@ -135,6 +136,8 @@ public class Camera {
             throw new IllegalArgumentException("image size must be positive, got " + nX + "x" + nY);
         if (j < 0 || j >= nX || i < 0 || i >= nY)
             throw new IllegalArgumentException("pixel (" + j + ", " + i + ") is outside the " + nX + "x" + nY + " image");
+        if (!(dx >= 0 && dx <= 1 && dy >= 0 && dy <= 1))
+            throw new IllegalArgumentException("pixel offset (" + dx + ", " + dy + ") is outside 0..1");
         if (width == 0 || height == 0)
             throw new MissingResourceException("camera view plane size is not set", "Camera", "vpSize");
         if (distance == 0)

@@ -1,0 +1,220 @@
+package app;
+
+import java.nio.file.Path;
+import java.util.List;
+
+import geometries.Geometries;
+import geometries.Sphere;
+import geometries.Triangle;
+import lighting.AmbientLight;
+import lighting.DirectionalLight;
+import lighting.LightSource;
+import lighting.PointLight;
+import lighting.SpotLight;
+import primitives.Color;
+import primitives.Material;
+import primitives.Point3D;
+import primitives.Vector;
+import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.RayTracerBasic;
+import renderer.Render;
+import scene.Scene;
+
+/**
+ * The example gallery: the course's classic pictures, built in Java.
+ */
+public final class Gallery {
+    private static final Color BLUE = new Color(java.awt.Color.BLUE);
+    private static final Color WHITE = new Color(java.awt.Color.WHITE);
+    private static final Color YELLOW = new Color(java.awt.Color.YELLOW);
+
+    private Gallery() {
+    }
+
+    /** @return every picture of the gallery */
+    public static List<Picture> pictures() {
+        return List.of(twoColors(),
+                lights("sphereDirectional", sphereScene(), sphereCamera(),
+                        new DirectionalLight(new Color(500, 300, 0), new Vector(1, 1, -1))),
+                lights("spherePoint", sphereScene(), sphereCamera(),
+                        new PointLight(new Color(500, 300, 0), new Point3D(-50, -50, 50)).setKl(0.00001).setKq(0.000001)),
+                lights("sphereSpot", sphereScene(), sphereCamera(),
+                        new SpotLight(new Color(500, 300, 0), new Point3D(-50, -50, 50), new Vector(1, 1, -2))
+                                .setKl(0.00001).setKq(0.00000001)),
+                lights("sphereSpotSharp", sphereScene(), sphereCamera(),
+                        new SpotLight(new Color(500, 300, 0), new Point3D(-50, -50, 50), new Vector(1, 1, -2))
+                                .setNarrowBeam(10).setKl(0.00001).setKq(0.00000001)),
+                lights("trianglesDirectional", trianglesScene(), trianglesCamera(),
+                        new DirectionalLight(new Color(300, 150, 150), new Vector(0, 0, -1))),
+                lights("trianglesPoint", trianglesScene(), trianglesCamera(),
+                        new PointLight(new Color(500, 250, 250), new Point3D(10, -10, -130)).setKl(0.0005).setKq(0.0005)),
+                lights("trianglesSpot", trianglesScene(), trianglesCamera(),
+                        new SpotLight(new Color(500, 250, 250), new Point3D(10, -10, -130), new Vector(-2, -2, -1))
+                                .setKl(0.0001).setKq(0.000005)),
+                lights("trianglesSpotSharp", trianglesScene(), trianglesCamera(),
+                        new SpotLight(new Color(800, 400, 400), new Point3D(10, -10, -130), new Vector(-2, -2, -1))
+                                .setNarrowBeam(10).setKl(0.001).setKq(0.00004)),
+                shadowSphereTriangle(),
+                shadowTrianglesSphere(),
+                twoSpheres(),
+                twoSpheresOnMirrors(),
+                trianglesTransparentSphere());
+    }
+
+    /**
+     * Renders pictures into a folder.
+     *
+     * @param pictures the pictures
+     * @param folder   the folder the PNG files go to
+     */
+    public static void render(List<Picture> pictures, Path folder) {
+        for (Picture picture : pictures)
+            render(picture, folder);
+    }
+
+    /**
+     * Renders a picture into a folder.
+     *
+     * @param picture the picture
+     * @param folder  the folder its PNG file goes to
+     * @return the render, its image still in memory for a look at the pixels
+     */
+    public static Render render(Picture picture, Path folder) {
+        Render render = new Render()
+                .setImageWriter(new ImageWriter(picture.name(), picture.nX(), picture.nY(), folder))
+                .setCamera(picture.camera())
+                .setRayTracer(new RayTracerBasic(picture.scene()));
+        render.renderImage();
+        if (picture.gridInterval() > 0)
+            render.printGrid(picture.gridInterval(), YELLOW);
+        render.writeToImage();
+        return render;
+    }
+
+    private static Camera frontCamera(double z, double vpSize) {
+        return new Camera(new Point3D(0, 0, z), new Vector(0, 0, -1), new Vector(0, 1, 0))
+                .setVpSize(vpSize, vpSize).setVpDistance(z);
+    }
+
+    /** The course's first picture: ambient light only, with a grid over it. */
+    private static Picture twoColors() {
+        Scene scene = new Scene("two colours")
+                .setAmbientLight(new AmbientLight(new Color(255, 191, 191), 1))
+                .setBackground(new Color(75, 127, 90));
+        scene.geometries.add(new Sphere(new Point3D(0, 0, -100), 50),
+                new Triangle(new Point3D(-100, 0, -100), new Point3D(0, 100, -100), new Point3D(-100, 100, -100)),
+                new Triangle(new Point3D(100, 0, -100), new Point3D(0, 100, -100), new Point3D(100, 100, -100)),
+                new Triangle(new Point3D(-100, 0, -100), new Point3D(0, -100, -100), new Point3D(-100, -100, -100)),
+                new Triangle(new Point3D(100, 0, -100), new Point3D(0, -100, -100), new Point3D(100, -100, -100)));
+        Camera camera = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0))
+                .setVpDistance(100).setVpSize(500, 500);
+        return new Picture("baseRenderTwoColors", 1000, 1000, scene, camera, 100);
+    }
+
+    private static Picture lights(String name, Scene scene, Camera camera, LightSource light) {
+        scene.lights.add(light);
+        return new Picture(name, 500, 500, scene, camera);
+    }
+
+    private static Scene sphereScene() {
+        Scene scene = new Scene("lights on a sphere");
+        scene.geometries.add(new Sphere(new Point3D(0, 0, -50), 50)
+                .setEmission(new Color(0, 0, 100))
+                .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(100)));
+        return scene;
+    }
+
+    private static Camera sphereCamera() {
+        return frontCamera(1000, 150);
+    }
+
+    private static Scene trianglesScene() {
+        Scene scene = new Scene("lights on triangles");
+        Material material = new Material().setKd(0.5).setKs(0.5).setShininess(300);
+        scene.geometries.add(
+                new Triangle(new Point3D(-150, -150, -150), new Point3D(150, -150, -150), new Point3D(75, 75, -150))
+                        .setMaterial(material),
+                new Triangle(new Point3D(-150, -150, -150), new Point3D(-70, 70, -50), new Point3D(75, 75, -150))
+                        .setMaterial(material));
+        return scene;
+    }
+
+    private static Camera trianglesCamera() {
+        return frontCamera(1000, 200);
+    }
+
+    /** A sphere casting a shadow on a small triangle hovering over it... and the triangle on it. */
+    private static Picture shadowSphereTriangle() {
+        Scene scene = new Scene("shadow: sphere and triangle");
+        Material material = new Material().setKd(0.5).setKs(0.5).setShininess(30);
+        scene.geometries.add(
+                new Sphere(new Point3D(0, 0, -200), 60).setEmission(BLUE).setMaterial(material),
+                new Triangle(new Point3D(-70, -40, 0), new Point3D(-40, -70, 0), new Point3D(-68, -68, -4))
+                        .setEmission(BLUE).setMaterial(material));
+        scene.lights.add(new SpotLight(new Color(400, 240, 0), new Point3D(-100, -100, 200), new Vector(1, 1, -3))
+                .setKl(1E-5).setKq(1.5E-7));
+        return new Picture("shadowSphereTriangle", 400, 400, scene, frontCamera(1000, 200));
+    }
+
+    /** Two triangles with a sphere over them: the report's scene A, with a point-sized light. */
+    private static Picture shadowTrianglesSphere() {
+        Scene scene = new Scene("shadow: triangles and sphere").setAmbientLight(new AmbientLight(WHITE, 0.15));
+        scene.geometries.add(reportFloor(new Material().setKs(0.8).setShininess(60)),
+                new Sphere(new Point3D(0, 0, -115), 30).setEmission(BLUE)
+                        .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(30)));
+        scene.lights.add(new SpotLight(new Color(700, 400, 400), new Point3D(40, 40, 115), new Vector(-1, -1, -4))
+                .setKl(4E-4).setKq(2E-5));
+        return new Picture("shadowTrianglesSphere", 600, 600, scene, frontCamera(1000, 200));
+    }
+
+    /** The report's floor: two triangles sharing a diagonal, the seam the report's pictures show. */
+    static Geometries reportFloor(Material material) {
+        Point3D corner = new Point3D(-150, -150, -115);
+        Point3D farCorner = new Point3D(75, 75, -150);
+        return new Geometries(
+                new Triangle(corner, new Point3D(150, -150, -135), farCorner).setMaterial(material),
+                new Triangle(corner, new Point3D(-70, 70, -140), farCorner).setMaterial(material));
+    }
+
+    /** A transparent sphere with a smaller one inside. */
+    private static Picture twoSpheres() {
+        Scene scene = new Scene("two spheres");
+        scene.geometries.add(
+                new Sphere(new Point3D(0, 0, -50), 50).setEmission(BLUE)
+                        .setMaterial(new Material().setKd(0.4).setKs(0.3).setShininess(100).setKt(0.3)),
+                new Sphere(new Point3D(0, 0, -50), 25).setEmission(new Color(java.awt.Color.RED))
+                        .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(100)));
+        scene.lights.add(new SpotLight(new Color(1000, 600, 0), new Point3D(-100, -100, 500), new Vector(-1, -1, -2))
+                .setKl(0.0004).setKq(0.0000006));
+        return new Picture("refractionTwoSpheres", 500, 500, scene, frontCamera(1000, 150));
+    }
+
+    /** Two spheres, one in the other, reflected in two mirrors. */
+    private static Picture twoSpheresOnMirrors() {
+        Scene scene = new Scene("two spheres on mirrors").setAmbientLight(new AmbientLight(WHITE, 0.1));
+        scene.geometries.add(
+                new Sphere(new Point3D(-950, -900, -1000), 400).setEmission(new Color(0, 0, 100))
+                        .setMaterial(new Material().setKd(0.25).setKs(0.25).setShininess(20).setKt(0.5)),
+                new Sphere(new Point3D(-950, -900, -1000), 200).setEmission(new Color(100, 20, 20))
+                        .setMaterial(new Material().setKd(0.25).setKs(0.25).setShininess(20)),
+                new Triangle(new Point3D(1500, -1500, -1500), new Point3D(-1500, 1500, -1500), new Point3D(670, 670, 3000))
+                        .setEmission(new Color(20, 20, 20)).setMaterial(new Material().setKr(1)),
+                new Triangle(new Point3D(1500, -1500, -1500), new Point3D(-1500, 1500, -1500), new Point3D(-1500, -1500, -2000))
+                        .setEmission(new Color(20, 20, 20)).setMaterial(new Material().setKr(0.5)));
+        scene.lights.add(new SpotLight(new Color(1020, 400, 400), new Point3D(-750, -750, -150), new Vector(-1, -1, -4))
+                .setKl(0.00001).setKq(0.000005));
+        return new Picture("reflectionTwoSpheresMirrored", 500, 500, scene, frontCamera(10000, 2500));
+    }
+
+    /** Two triangles under a transparent sphere: the sphere's shadow is light. */
+    private static Picture trianglesTransparentSphere() {
+        Scene scene = new Scene("triangles and a transparent sphere").setAmbientLight(new AmbientLight(WHITE, 0.15));
+        scene.geometries.add(reportFloor(new Material().setKs(0.8).setShininess(60)),
+                new Sphere(new Point3D(60, 50, -50), 30).setEmission(BLUE)
+                        .setMaterial(new Material().setKd(0.2).setKs(0.2).setShininess(30).setKt(0.6)));
+        scene.lights.add(new SpotLight(new Color(700, 400, 400), new Point3D(60, 50, 0), new Vector(0, 0, -1))
+                .setKl(4E-5).setKq(2E-7));
+        return new Picture("refractionShadow", 600, 600, scene, frontCamera(1000, 200));
+    }
+}

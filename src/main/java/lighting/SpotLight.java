@@ -1,0 +1,76 @@
+package lighting;
+
+import primitives.Color;
+import primitives.Point3D;
+import primitives.Vector;
+
+import static primitives.Util.requireNonNull;
+import static primitives.Util.requirePositive;
+
+/**
+ * A point light that shines in a direction: its intensity is multiplied by
+ * {@code max(0, dir·l)} raised to the narrow-beam power (1 by default).
+ */
+public class SpotLight extends PointLight {
+    private final Vector direction;
+    private double narrowBeam = 1;
+
+    /**
+     * Creates a spot light.
+     *
+     * @param intensity the light's intensity
+     * @param position  the light's position
+     * @param direction the direction of the beam's axis (any length)
+     */
+    public SpotLight(Color intensity, Point3D position, Vector direction) {
+        super(intensity, position);
+        this.direction = requireNonNull(direction, "spot light direction").normalized();
+    }
+
+    /**
+     * Narrows the beam: the spot factor is raised to this power.
+     *
+     * @param narrowBeam the power, positive (1 is the plain spot, larger is narrower)
+     * @return this light
+     */
+    public SpotLight setNarrowBeam(double narrowBeam) {
+        this.narrowBeam = requirePositive(narrowBeam, "spot light narrow beam");
+        return this;
+    }
+
+    @Override
+    public SpotLight setKc(double kC) {
+        super.setKc(kC);
+        return this;
+    }
+
+    @Override
+    public SpotLight setKl(double kL) {
+        super.setKl(kL);
+        return this;
+    }
+
+    @Override
+    public SpotLight setKq(double kQ) {
+        super.setKq(kQ);
+        return this;
+    }
+
+    /** @return the unit direction of the beam's axis */
+    public Vector getDirection() {
+        return direction;
+    }
+
+    /** @return the narrow-beam power */
+    public double getNarrowBeam() {
+        return narrowBeam;
+    }
+
+    @Override
+    public Color getIntensity(Point3D p) {
+        double factor = Math.max(0, direction.dotProduct(getL(p)));
+        if (factor == 0)
+            return Color.BLACK;
+        return super.getIntensity(p).scale(narrowBeam == 1 ? factor : Math.pow(factor, narrowBeam));
+    }
+}

@@ -1,0 +1,160 @@
+package renderer;
+
+import java.util.List;
+
+import geometries.Intersectable.GeoPoint;
+import lighting.LightSource;
+import primitives.Color;
+import primitives.Material;
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+import scene.Scene;
+
+import static primitives.Util.alignZero;
+
+/**
+ * The course's ray tracer: Phong local lighting with shadows that let light through transparent
+ * bodies, plus reflection and straight-through refraction traced recursively.
+ */
+public class RayTracerBasic extends RayTracerBase {
+    /** The deepest recursion of reflected and refracted rays. */
+    private static final int MAX_CALC_COLOR_LEVEL = 10;
+    /** Rays whose accumulated factor falls below this are not traced. */
+    private static final double MIN_CALC_COLOR_K = 0.001;
+    private static final double INITIAL_K = 1.0;
+
+    /**
+     * Creates a ray tracer for a scene.
+     *
+     * @param scene the scene
+     */
+    public RayTracerBasic(Scene scene) {
+        super(scene);
+    }
+
+    @Override
+    public Color traceRay(Ray ray) {
+        GeoPoint closestPoint = findClosestIntersection(ray);
+        return closestPoint == null ? scene.background : calcColor(closestPoint, ray);
+    }
+
+    private GeoPoint findClosestIntersection(Ray ray) {
+        return ray.findClosestGeoPoint(scene.geometries.findGeoIntersections(ray));
+    }
+
+    /** The colour at a point seen by a primary ray: the recursive colour plus the ambient light. */
+    private Color calcColor(GeoPoint geoPoint, Ray ray) {
+        return calcColor(geoPoint, ray, MAX_CALC_COLOR_LEVEL, INITIAL_K).add(scene.ambientLight.getIntensity());
+    }
+
+    private Color calcColor(GeoPoint geoPoint, Ray ray, int level, double k) {
+        Vector n = geoPoint.geometry.getNormal(geoPoint.point);
+        Color color = geoPoint.geometry.getEmission().add(calcLocalEffects(geoPoint, ray.getDir(), n, k));
+        return level == 1 ? color : color.add(calcGlobalEffects(geoPoint, ray.getDir(), n, level, k));
+    }
+
+    /** Diffuse and specular light from every light source that reaches the point. */
+    private Color calcLocalEffects(GeoPoint geoPoint, Vector v, Vector n, double k) {
+        double nv = alignZero(n.dotProduct(v));
+        if (nv == 0)
+            return Color.BLACK;
+        Material material = geoPoint.geometry.getMaterial();
+        Color color = Color.BLACK;
+        for (LightSource light : scene.lights) {
+            Vector l = light.getL(geoPoint.point);
+            double nl = alignZero(n.dotProduct(l));
+            if (nl * nv > 0) { // the light and the viewer are on the same side of the surface
+                double ktr = transparency(light, l, n, geoPoint);
+                if (ktr * k > MIN_CALC_COLOR_K) {
+                    Color lightIntensity = light.getIntensity(geoPoint.point).scale(ktr);
+                    color = color.add(calcDiffusive(material, nl, lightIntensity),
+                            calcSpecular(material, n, l, nl, v, lightIntensity));
+                }
+            }
+        }
+        return color;
+    }
+
+    private Color calcDiffusive(Material material, double nl, Color lightIntensity) {
+        return lightIntensity.scale(material.getKd() * Math.abs(nl));
+    }
+
+    private Color calcSpecular(Material material, Vector n, Vector l, double nl, Vector v, Color lightIntensity) {
+        // r = l − 2(l·n)n, and the highlight is max(0, −v·r)^nShininess
+        double minusVR = -alignZero(v.dotProduct(l) - 2 * nl * v.dotProduct(n));
+        if (minusVR <= 0)
+            return Color.BLACK;
+        return lightIntensity.scale(material.getKs() * Math.pow(minusVR, material.getShininess()));
+    }
+
+    /** Reflected and refracted light, each traced while its factor stays above the limit. */
+    private Color calcGlobalEffects(GeoPoint geoPoint, Vector v, Vector n, int level, double k) {
+        Material material = geoPoint.geometry.getMaterial();
+        Color color = Color.BLACK;
+        double kR = material.getKr();
+        double kkr = k * kR;
+        if (kkr > MIN_CALC_COLOR_K)
+            color = calcGlobalEffect(constructReflectedRay(geoPoint.point, v, n), level, kR, kkr);
+        double kT = material.getKt();
+        double kkt = k * kT;
+        if (kkt > MIN_CALC_COLOR_K)
+            color = color.add(calcGlobalEffect(constructRefractedRay(geoPoint.point, v, n), level, kT, kkt));
+        return color;
+    }
+
+    private Color calcGlobalEffect(Ray ray, int level, double kx, double kkx) {
+        GeoPoint geoPoint = findClosestIntersection(ray);
+        return (geoPoint == null ? scene.background : calcColor(geoPoint, ray, level - 1, kkx)).scale(kx);
+    }
+
+    private Ray constructReflectedRay(Point3D point, Vector v, Vector n) {
+        double vn = v.dotProduct(n);
+        Vector r = vn == 0 ? v : v.subtract(n.scale(2 * vn));
+        return new Ray(point, r, n);
+    }
+
+    private Ray constructRefractedRay(Point3D point, Vector v, Vector n) {
+        return new Ray(point, v, n);
+    }
+
+    /**
+     * How much of a light reaches a point: 1 when nothing is in the way, 0 when an opaque body is,
+     * and the product of the {@code kT} of the transparent bodies in between otherwise.
+     *
+     * @param light    the light
+     * @param l        the unit direction from the light to the point
+     * @param n        the surface normal at the point
+     * @param geoPoint the lit point
+     * @return the transparency factor in [0, 1]
+     */
+    private double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint) {
+        Ray lightRay = new Ray(geoPoint.point, l.scale(-1), n);
+        return visibility(light.getDistance(geoPoint.point), lightRay, geoPoint);
+    }
+
+    /**
+     * The transparency along one shadow ray: the product of the {@code kT} of every body it passes
+     * before the light, 0 as soon as that product drops below {@link #MIN_CALC_COLOR_K}.
+     *
+     * @param lightDistance the distance from the point to the light (or the light's sample point)
+     * @param lightRay      the shadow ray, its head already moved off the surface
+     * @param geoPoint      the lit point
+     * @return the transparency in [0, 1]
+     */
+    private double visibility(double lightDistance, Ray lightRay, GeoPoint geoPoint) {
+        // the head is DELTA off the surface: no blocker nearer the point than the light lies farther along
+        List<GeoPoint> intersections = scene.geometries.findGeoIntersections(lightRay, lightDistance + Ray.DELTA);
+        if (intersections == null)
+            return 1.0;
+        double ktr = 1.0;
+        for (GeoPoint gp : intersections) {
+            if (alignZero(gp.point.distance(geoPoint.point) - lightDistance) <= 0) {
+                ktr *= gp.geometry.getMaterial().getKt();
+                if (ktr < MIN_CALC_COLOR_K)
+                    return 0.0;
+            }
+        }
+        return ktr;
+    }
+}

@@ -1,0 +1,218 @@
+package renderer;
+
+import java.util.MissingResourceException;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import primitives.Color;
+
+import static primitives.Util.requireNonNull;
+
+/**
+ * Renders a picture: casts a ray from the camera through every pixel, traces it, and writes the
+ * colour to the image. Pixels are rendered in square tiles by several threads (all cores by
+ * default); each pixel's colour depends on nothing but the pixel, so the picture is the same bit
+ * for bit whatever the number of threads.
+ */
+public class Render {
+    /** The edge of a square tile of pixels handed to a thread at a time. */
+    private static final int TILE = 16;
+    /** How often, in milliseconds, the debug print reports progress. */
+    private static final long PROGRESS_INTERVAL = 1000;
+
+    private ImageWriter imageWriter;
+    private Camera camera;
+    private RayTracerBase rayTracer;
+    private int threadsCount = Runtime.getRuntime().availableProcessors();
+    private boolean debugPrint;
+
+    /**
+     * Sets the image to render into.
+     *
+     * @param imageWriter the image
+     * @return this render
+     */
+    public Render setImageWriter(ImageWriter imageWriter) {
+        this.imageWriter = requireNonNull(imageWriter, "image writer");
+        return this;
+    }
+
+    /** @return the image rendered into (null until set) */
+    public ImageWriter getImageWriter() {
+        return imageWriter;
+    }
+
+    /**
+     * Sets the camera.
+     *
+     * @param camera the camera
+     * @return this render
+     */
+    public Render setCamera(Camera camera) {
+        this.camera = requireNonNull(camera, "camera");
+        return this;
+    }
+
+    /**
+     * Sets the ray tracer, which holds the scene.
+     *
+     * @param rayTracer the ray tracer
+     * @return this render
+     */
+    public Render setRayTracer(RayTracerBase rayTracer) {
+        this.rayTracer = requireNonNull(rayTracer, "ray tracer");
+        return this;
+    }
+
+    /**
+     * Sets the number of rendering threads.
+     *
+     * @param threads the number of threads, 1 or more; 0 for one per core (the default)
+     * @return this render
+     */
+    public Render setMultithreading(int threads) {
+        if (threads < 0)
+            throw new IllegalArgumentException("number of threads must not be negative, got " + threads);
+        this.threadsCount = threads == 0 ? Runtime.getRuntime().availableProcessors() : threads;
+        return this;
+    }
+
+    /**
+     * Prints the rendering progress, in percent, to the standard output.
+     *
+     * @return this render
+     */
+    public Render setDebugPrint() {
+        this.debugPrint = true;
+        return this;
+    }
+
+    /**
+     * Renders the picture into the image (call {@link #writeToImage()} to save it).
+     *
+     * @throws MissingResourceException naming the image writer, camera or ray tracer when it is not set
+     */
+    public void renderImage() {
+        requireImageWriter();
+        if (camera == null)
+            throw new MissingResourceException("Render: the camera is not set", Render.class.getName(), "camera");
+        if (rayTracer == null)
+            throw new MissingResourceException("Render: the ray tracer is not set", Render.class.getName(), "rayTracer");
+        new TileRenderer().run();
+    }
+
+    /**
+     * Draws a grid of lines over the image.
+     *
+     * @param interval the distance in pixels between lines, positive
+     * @param color    the lines' colour
+     * @throws MissingResourceException when the image writer is not set
+     */
+    public void printGrid(int interval, Color color) {
+        requireImageWriter();
+        if (interval <= 0)
+            throw new IllegalArgumentException("grid interval must be positive, got " + interval);
+        requireNonNull(color, "grid colour");
+        int nX = imageWriter.getNx();
+        int nY = imageWriter.getNy();
+        for (int i = 0; i < nY; ++i)
+            for (int j = 0; j < nX; ++j)
+                if (i % interval == 0 || j % interval == 0)
+                    imageWriter.writePixel(j, i, color);
+    }
+
+    /**
+     * Writes the image to its PNG file.
+     *
+     * @throws MissingResourceException when the image writer is not set
+     */
+    public void writeToImage() {
+        requireImageWriter();
+        imageWriter.writeToImage();
+    }
+
+    private void requireImageWriter() {
+        if (imageWriter == null)
+            throw new MissingResourceException("Render: the image writer is not set", Render.class.getName(), "imageWriter");
+    }
+
+    /** One rendering pass: threads take tiles from a shared counter until none is left. */
+    private final class TileRenderer {
+        private final int nX = imageWriter.getNx();
+        private final int nY = imageWriter.getNy();
+        private final int tilesX = (nX + TILE - 1) / TILE;
+        private final int tilesCount = tilesX * ((nY + TILE - 1) / TILE);
+        private final AtomicInteger nextTile = new AtomicInteger();
+        private final AtomicInteger tilesDone = new AtomicInteger();
+        private volatile RuntimeException failure;
+
+        void run() {
+            int threads = Math.min(threadsCount, tilesCount);
+            Thread[] workers = new Thread[threads - 1];
+            for (int t = 0; t < workers.length; ++t) {
+                workers[t] = new Thread(this::work, "render-" + t);
+                workers[t].start();
+            }
+            Thread printer = debugPrint ? startProgressPrinter() : null;
+            work();
+            joinAll(workers);
+            if (printer != null) {
+                printer.interrupt();
+                joinAll(printer);
+                System.out.println("\r100%");
+            }
+            if (failure != null)
+                throw failure;
+        }
+
+        private Thread startProgressPrinter() {
+            Thread printer = new Thread(this::printProgress, "render-progress");
+            printer.setDaemon(true);
+            printer.start();
+            return printer;
+        }
+
+        private void work() {
+            try {
+                for (int tile = nextTile.getAndIncrement(); tile < tilesCount && failure == null;
+                     tile = nextTile.getAndIncrement()) {
+                    renderTile(tile);
+                    tilesDone.incrementAndGet();
+                }
+            } catch (RuntimeException e) {
+                failure = e;
+            }
+        }
+
+        private void renderTile(int tile) {
+            int x0 = (tile % tilesX) * TILE;
+            int y0 = (tile / tilesX) * TILE;
+            int x1 = Math.min(x0 + TILE, nX);
+            int y1 = Math.min(y0 + TILE, nY);
+            for (int i = y0; i < y1; ++i)
+                for (int j = x0; j < x1; ++j)
+                    imageWriter.writePixel(j, i, rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i)));
+        }
+
+        private void printProgress() {
+            try {
+                while (!Thread.currentThread().isInterrupted()) {
+                    System.out.printf("\r%3d%%", 100L * tilesDone.get() / tilesCount);
+                    System.out.flush();
+                    Thread.sleep(PROGRESS_INTERVAL);
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+
+        private void joinAll(Thread... threads) {
+            try {
+                for (Thread thread : threads)
+                    thread.join();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("rendering was interrupted", e);
+            }
+        }
+    }
+}

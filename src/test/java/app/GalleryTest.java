@@ -1,0 +1,98 @@
+package app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.Test;
+
+import renderer.ImageWriter;
+import renderer.Render;
+
+/**
+ * Tests for {@link Gallery}: every picture renders (into {@code target/}, never {@code images/}), and the
+ * report's scene A matches the report's own picture.
+ */
+class GalleryTest {
+    private static final Path FOLDER = Path.of("target", "test-images", "gallery");
+
+    private static BufferedImage reportImage(String name) throws IOException {
+        try (InputStream in = GalleryTest.class.getResourceAsStream("/report/" + name)) {
+            assertNotNull(in, "missing test resource " + name);
+            return ImageIO.read(in);
+        }
+    }
+
+    /** The largest difference of one channel between two colours. */
+    private static int channelDifference(int rgb1, int rgb2) {
+        int max = 0;
+        for (int shift = 0; shift < 24; shift += 8)
+            max = Math.max(max, Math.abs(((rgb1 >> shift) & 0xFF) - ((rgb2 >> shift) & 0xFF)));
+        return max;
+    }
+
+    /** Test method for {@link Gallery#pictures()} and {@link Gallery#render(Picture, Path)}. */
+    @Test
+    void testEveryPictureRenders() {
+        List<Picture> pictures = Gallery.pictures();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 14 pictures, each written as a PNG that shows more than one colour
+        assertEquals(14, pictures.size(), "TC01: wrong number of gallery pictures");
+        for (Picture picture : pictures) {
+            ImageWriter image = Gallery.render(picture, FOLDER).getImageWriter();
+            assertTrue(Files.exists(FOLDER.resolve(picture.name() + ".png")), "TC01: " + picture.name() + " not written");
+            Set<java.awt.Color> colours = new HashSet<>();
+            for (int y = 0; y < picture.nY(); y += 7)
+                for (int x = 0; x < picture.nX(); x += 7)
+                    colours.add(image.getPixel(x, y));
+            assertTrue(colours.size() > 1, "TC01: " + picture.name() + " is a single flat colour");
+        }
+    }
+
+    /**
+     * Test method for {@link Gallery#render(Picture, Path)}: the report's scene A with hard shadows is
+     * the report's picture, level for level, except along the seam the report's open triangles leave.
+     */
+    @Test
+    void testSceneAMatchesReport() throws IOException {
+        Picture sceneA = Gallery.pictures().stream().filter(p -> p.name().equals("shadowTrianglesSphere"))
+                .findFirst().orElseThrow();
+        Render render = Gallery.render(sceneA, FOLDER);
+        BufferedImage report = reportImage("A-sphere-on-triangles-hard.png");
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: off the seam (the diagonal x + y = 599), every pixel is within 2 levels of the report's,
+        // except the odd ray through the floor's outer edge, which the report's open triangles miss
+        int seamPixels = 0;
+        int outerEdgePixels = 0;
+        for (int y = 0; y < 600; ++y)
+            for (int x = 0; x < 600; ++x) {
+                int rgb = render.getImageWriter().getPixel(x, y).getRGB();
+                int difference = channelDifference(rgb, report.getRGB(x, y));
+                if (difference <= 2)
+                    continue;
+                if (Math.abs(x + y - 599) <= 1)
+                    ++seamPixels;
+                else {
+                    assertEquals(0, report.getRGB(x, y) & 0xFFFFFF,
+                            "TC01: pixel (" + x + ", " + y + ") differs by " + difference + " off the floor's edges");
+                    ++outerEdgePixels;
+                }
+            }
+        assertTrue(outerEdgePixels <= 5, "TC01: too many edge pixels differ: " + outerEdgePixels);
+        // ===== Boundary Values Tests =====
+        // TC11: on the seam the report shows its dark line and we do not (the floor is closed there)
+        assertTrue(seamPixels > 300, "TC11: the report's seam line should differ from our seamless floor");
+    }
+}

@@ -1,0 +1,176 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Comparator;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+import geometries.Intersectable.GeoPoint;
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * Unit tests for {@link geometries.Geometries}.
+ */
+class GeometriesTest {
+    /** Sphere around the origin, radius 1: a ray down the z axis hits it at z = 1 and z = -1. */
+    private final Sphere sphere = new Sphere(Point3D.ZERO, 1);
+    /** Triangle at z = -3 around the z axis: hit at (0,0,-3). */
+    private final Triangle triangle = new Triangle(new Point3D(-1, -1, -3), new Point3D(1, -1, -3),
+            new Point3D(0, 1, -3));
+    /** Plane z = -5: hit at (0,0,-5). */
+    private final Plane plane = new Plane(new Point3D(0, 0, -5), new Vector(0, 0, 1));
+    /** All three shapes. */
+    private final Geometries all = new Geometries(sphere, triangle, plane);
+
+    /**
+     * A ray down the z axis from a height.
+     *
+     * @param z the start height
+     * @return the ray from (0,0,z) toward (0,0,-1)
+     */
+    private static Ray downFrom(double z) {
+        return new Ray(new Point3D(0, 0, z), new Vector(0, 0, -1));
+    }
+
+    /**
+     * Sorts points by decreasing z, so lists found in any order can be compared.
+     *
+     * @param points the points
+     * @return a sorted copy
+     */
+    private static List<Point3D> byZ(List<Point3D> points) {
+        return points.stream().sorted(Comparator.comparingDouble(Point3D::getZ).reversed()).toList();
+    }
+
+    /**
+     * Test method for {@link geometries.Geometries#findIntersections(primitives.Ray)}.
+     */
+    @Test
+    void testFindIntersections() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: some shapes are hit (triangle and plane, not the sphere: 2 points)
+        List<Point3D> result = all.findIntersections(downFrom(-2));
+        assertEquals(List.of(new Point3D(0, 0, -3), new Point3D(0, 0, -5)), byZ(result),
+                "TC01: wrong points when some shapes are hit");
+
+        // ===== Boundary Values Tests =====
+        // TC11: empty collection (0 points)
+        assertNull(new Geometries().findIntersections(downFrom(10)), "TC11: an empty collection must give null");
+
+        // TC12: no shape is hit (the ray goes away from all of them: 0 points)
+        assertNull(all.findIntersections(new Ray(new Point3D(0, 0, 10), new Vector(0, 0, 1))),
+                "TC12: no shape hit must give null");
+
+        // TC13: only one shape is hit (the plane: 1 point (0,0,-5))
+        assertEquals(List.of(new Point3D(0, 0, -5)), all.findIntersections(downFrom(-4)),
+                "TC13: wrong point when only one shape is hit");
+
+        // TC14: all shapes are hit (2 + 1 + 1 = 4 points)
+        List<Point3D> every = all.findIntersections(downFrom(10));
+        assertEquals(4, every.size(), "TC14: wrong number of points when all shapes are hit");
+        assertEquals(List.of(new Point3D(0, 0, 1), new Point3D(0, 0, -1), new Point3D(0, 0, -3), new Point3D(0, 0, -5)),
+                byZ(every), "TC14: wrong points when all shapes are hit");
+    }
+
+    /**
+     * Test method for {@link geometries.Intersectable#findGeoIntersections(primitives.Ray)} on a composite:
+     * each point names the shape it lies on, also through a nested composite.
+     */
+    @Test
+    void testFindGeoIntersections() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: every GeoPoint names the shape hit (4 GeoPoints)
+        List<GeoPoint> result = all.findGeoIntersections(downFrom(10));
+        assertEquals(4, result.size(), "TC01: wrong number of GeoPoints");
+        assertTrue(result.contains(new GeoPoint(sphere, new Point3D(0, 0, 1))), "TC01: missing the sphere's first point");
+        assertTrue(result.contains(new GeoPoint(sphere, new Point3D(0, 0, -1))), "TC01: missing the sphere's second point");
+        assertTrue(result.contains(new GeoPoint(triangle, new Point3D(0, 0, -3))), "TC01: missing the triangle's point");
+        assertTrue(result.contains(new GeoPoint(plane, new Point3D(0, 0, -5))), "TC01: missing the plane's point");
+
+        // TC02: a composite nested in a composite is searched too (4 GeoPoints, the plane named)
+        Geometries nested = new Geometries(sphere, new Geometries(triangle, new Geometries(plane)));
+        List<GeoPoint> nestedResult = nested.findGeoIntersections(downFrom(10));
+        assertEquals(4, nestedResult.size(), "TC02: wrong number of GeoPoints through nested composites");
+        assertTrue(nestedResult.contains(new GeoPoint(plane, new Point3D(0, 0, -5))),
+                "TC02: missing the plane's point through nested composites");
+    }
+
+    /**
+     * Test method for {@link geometries.Intersectable#findGeoIntersections(primitives.Ray, double)} on a composite.
+     */
+    @Test
+    void testFindGeoIntersectionsMaxDistance() {
+        // the ray from (0,0,10) meets the shapes at distances 9, 11, 13 and 15
+        Ray ray = downFrom(10);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: max distance 12 keeps only the sphere's two points
+        List<GeoPoint> result = all.findGeoIntersections(ray, 12);
+        assertEquals(2, result.size(), "TC01: wrong number of points within distance 12");
+        assertTrue(result.stream().allMatch(gp -> gp.geometry == sphere), "TC01: only the sphere is within distance 12");
+
+        // TC02: max distance 14 keeps the sphere and the triangle (3 points)
+        assertEquals(3, all.findGeoIntersections(ray, 14).size(), "TC02: wrong number of points within distance 14");
+
+        // TC03: max distance before every shape (null)
+        assertNull(all.findGeoIntersections(ray, 5), "TC03: nothing within distance 5 must give null");
+
+        // ===== Boundary Values Tests =====
+        // TC11: max distance exactly at the farthest point (the plane at 15): all 4 points
+        assertEquals(4, all.findGeoIntersections(ray, 15).size(), "TC11: a point exactly at the max distance must count");
+
+        // TC12: max distance exactly at the nearest point (the sphere's top at 9): 1 point
+        assertEquals(List.of(new GeoPoint(sphere, new Point3D(0, 0, 1))), all.findGeoIntersections(ray, 9),
+                "TC12: a point exactly at the max distance must count");
+    }
+
+    /**
+     * Test method for {@link geometries.Geometries#add(geometries.Intersectable...)}.
+     */
+    @Test
+    void testAdd() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: add returns the composite itself and keeps the shapes in order
+        Geometries g = new Geometries();
+        assertSame(g, g.add(sphere, plane), "TC01: add must return the composite itself");
+        assertSame(g, g.add(triangle), "TC01: add must return the composite itself");
+        assertEquals(List.of(sphere, plane, triangle), g.getGeometries(), "TC01: wrong shapes held");
+
+        // TC02: the list of shapes cannot be changed from outside
+        assertThrows(UnsupportedOperationException.class, () -> g.getGeometries().clear(),
+                "TC02: the list of shapes must be unmodifiable");
+
+        // TC03: a null shape among others is rejected and nothing is added
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> g.add(sphere, null),
+                "TC03: a null shape must throw");
+        assertTrue(e.getMessage().contains("null"), "TC03: the message must name the null: " + e.getMessage());
+        assertEquals(3, g.getGeometries().size(), "TC03: a rejected add must not add anything");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a single null shape is rejected
+        e = assertThrows(IllegalArgumentException.class, () -> g.add((Intersectable) null),
+                "TC11: a null shape must throw");
+        assertTrue(e.getMessage().contains("null"), "TC11: the message must name the null: " + e.getMessage());
+
+        // TC12: a null array is rejected
+        e = assertThrows(IllegalArgumentException.class, () -> g.add((Intersectable[]) null),
+                "TC12: a null array must throw");
+        assertTrue(e.getMessage().contains("null"), "TC12: the message must name the null: " + e.getMessage());
+
+        // TC13: the constructor rejects a null shape too
+        assertThrows(IllegalArgumentException.class, () -> new Geometries(sphere, null),
+                "TC13: a null shape in the constructor must throw");
+
+        // TC14: adding nothing leaves the composite unchanged
+        assertSame(g, g.add(), "TC14: add must return the composite itself");
+        assertEquals(3, g.getGeometries().size(), "TC14: adding nothing must not change the composite");
+    }
+}

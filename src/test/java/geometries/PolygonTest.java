@@ -1,0 +1,267 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+import geometries.Intersectable.GeoPoint;
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * Unit tests for {@link geometries.Polygon}.
+ */
+class PolygonTest {
+    /** Vertices of the course's parallelogram in the plane x + y + z = 1. */
+    private static final Point3D A = new Point3D(0, 0, 1);
+    private static final Point3D B = new Point3D(1, 0, 0);
+    private static final Point3D C = new Point3D(0, 1, 0);
+    private static final Point3D D = new Point3D(-1, 1, 1);
+
+    /**
+     * The parallelogram ABCD; seen along z its projection is (0,0), (1,0), (0,1), (-1,1), and a point
+     * (x, y) of the projection lies on the polygon at (x, y, 1 - x - y).
+     */
+    private final Polygon polygon = new Polygon(A, B, C, D);
+
+    /**
+     * A ray straight down (along -z) from above the point (x, y) of the projection.
+     *
+     * @param x projected x
+     * @param y projected y
+     * @return the ray from (x, y, 5) toward (0, 0, -1)
+     */
+    private static Ray down(double x, double y) {
+        return new Ray(new Point3D(x, y, 5), new Vector(0, 0, -1));
+    }
+
+    /**
+     * Asserts that an exception's message contains a word.
+     *
+     * @param message the case label
+     * @param word    the word the message must contain
+     * @param e       the exception
+     */
+    private static void assertMessage(String message, String word, IllegalArgumentException e) {
+        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
+                message + ": the message must contain \"" + word + "\" but is: " + e.getMessage());
+    }
+
+    /**
+     * Test method for {@link geometries.Polygon#Polygon(primitives.Point3D...)}.
+     */
+    @Test
+    void testConstructor() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a correct convex quadrangle is accepted and keeps its vertices in order
+        Polygon p = assertDoesNotThrow(() -> new Polygon(A, B, C, D), "TC01: failed constructing a correct polygon");
+        assertEquals(List.of(A, B, C, D), p.getVertices(), "TC01: wrong vertices");
+
+        // TC02: a regular pentagon is accepted
+        Point3D[] pentagon = new Point3D[5];
+        for (int k = 0; k < 5; ++k) {
+            double angle = Math.PI / 2 + k * 2 * Math.PI / 5;
+            pentagon[k] = new Point3D(Math.cos(angle), Math.sin(angle), 2);
+        }
+        assertDoesNotThrow(() -> new Polygon(pentagon), "TC02: failed constructing a regular pentagon");
+
+        // TC03: vertices not in one plane
+        assertMessage("TC03", "coplanar", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B, C, new Point3D(-2, 1, 1)), "TC03: non-coplanar vertices must throw"));
+
+        // TC04: a concave quadrangle (a dent at (1,1,0))
+        assertMessage("TC04", "convex", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(new Point3D(0, 0, 0), new Point3D(4, 0, 0), new Point3D(1, 1, 0), new Point3D(0, 4, 0)),
+                "TC04: a concave quadrangle must throw"));
+
+        // TC05: a self-crossing bow-tie quadrangle
+        assertMessage("TC05", "convex", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(new Point3D(0, 0, 0), new Point3D(1, 1, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)),
+                "TC05: a bow-tie must throw"));
+
+        // TC06: a pentagram (a star whose turns all go the same way)
+        Point3D[] star = new Point3D[5];
+        for (int k = 0; k < 5; ++k) {
+            double angle = Math.PI / 2 + k * 4 * Math.PI / 5;
+            star[k] = new Point3D(Math.cos(angle), Math.sin(angle), 0);
+        }
+        assertMessage("TC06", "convex", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(star), "TC06: a pentagram must throw"));
+
+        // TC07: a concave quadrangle whose dent is the second vertex (the first turn goes the wrong way)
+        assertMessage("TC07", "convex", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(new Point3D(4, 0, 0), new Point3D(1, 1, 0), new Point3D(0, 4, 0), new Point3D(0, 0, 0)),
+                "TC07: a concave quadrangle must throw"));
+
+        // TC08: a null vertex is rejected
+        assertThrows(IllegalArgumentException.class, () -> new Polygon(A, B, null, D), "TC08: null vertex must throw");
+
+        // ===== Boundary Values Tests =====
+        // TC11: fewer than 3 vertices (2, none, a null array)
+        assertMessage("TC11", "3 vertices", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B), "TC11: 2 vertices must throw"));
+        assertMessage("TC11", "3 vertices", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(), "TC11: no vertices must throw"));
+        assertMessage("TC11", "3 vertices", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon((Point3D[]) null), "TC11: a null vertex array must throw"));
+
+        // TC12: the last vertex (0,0.5,0.5) lies on the edge from its neighbour C to its neighbour A
+        assertMessage("TC12", "edge", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B, C, new Point3D(0, 0.5, 0.5)), "TC12: vertex on an edge must throw"));
+
+        // TC13: three consecutive collinear vertices in the middle of the list
+        assertMessage("TC13", "collinear", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(2, 0, 0), new Point3D(0, 2, 0)),
+                "TC13: vertex on an edge must throw"));
+
+        // TC14: two consecutive vertices coincide
+        assertMessage("TC14", "coincide", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B, C, C), "TC14: coincident vertices must throw"));
+
+        // TC15: the last vertex coincides with the first
+        assertMessage("TC15", "coincide", assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B, C, D, A), "TC15: closing vertex equal to the first must throw"));
+    }
+
+    /**
+     * Test method for {@link geometries.Polygon#getNormal(primitives.Point3D)}.
+     */
+    @Test
+    void testGetNormal() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: unit normal ±(1,1,1)/sqrt3, orthogonal to every edge
+        Vector n = polygon.getNormal(new Point3D(0, 0, 1));
+        assertEquals(1, n.length(), 1e-10, "TC01: normal is not a unit vector");
+        Point3D[] v = { A, B, C, D };
+        for (int i = 0; i < 4; ++i)
+            assertEquals(0, n.dotProduct(v[(i + 1) % 4].subtract(v[i])), 1e-10,
+                    "TC01: normal not orthogonal to edge " + i);
+        double s = 1 / Math.sqrt(3);
+        assertTrue(n.equals(new Vector(s, s, s)) || n.equals(new Vector(-s, -s, -s)), "TC01: wrong normal " + n);
+
+        // TC02: the normal is the same at every point and equals the plane's normal
+        assertEquals(n, polygon.getNormal(new Point3D(0.25, 0.25, 0.5)), "TC02: normal differs across the polygon");
+        assertEquals(n, polygon.getPlane().getNormal(), "TC02: normal differs from the plane's");
+    }
+
+    /**
+     * Test method for {@link geometries.Polygon#findIntersections(primitives.Ray)}.
+     */
+    @Test
+    void testFindIntersections() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: ray hits inside the polygon (1 point (0.25,0.25,0.5))
+        assertEquals(List.of(new Point3D(0.25, 0.25, 0.5)), polygon.findIntersections(down(0.25, 0.25)),
+                "TC01: wrong intersection point inside the polygon");
+
+        // TC02: ray passes outside, against an edge (0 points)
+        assertNull(polygon.findIntersections(down(1, 0.5)), "TC02: ray outside against an edge must give null");
+
+        // TC03: ray passes outside, against a vertex (0 points)
+        assertNull(polygon.findIntersections(down(2, -0.5)), "TC03: ray outside against a vertex must give null");
+
+        // TC04: polygon behind the ray (0 points)
+        assertNull(polygon.findIntersections(new Ray(new Point3D(0.25, 0.25, -5), new Vector(0, 0, -1))),
+                "TC04: polygon behind the ray must give null");
+
+        // TC05: oblique ray from the other side hits inside (1 point (0.25,0.25,0.5))
+        assertEquals(List.of(new Point3D(0.25, 0.25, 0.5)),
+                polygon.findIntersections(new Ray(new Point3D(0, 0, -1), new Vector(0.25, 0.25, 1.5))),
+                "TC05: wrong intersection point for an oblique ray");
+
+        // ===== Boundary Values Tests =====
+        // TC11: ray through the middle of edge AB: the polygon is closed, so it hits (1 point (0.5,0,0.5))
+        assertEquals(List.of(new Point3D(0.5, 0, 0.5)), polygon.findIntersections(down(0.5, 0)),
+                "TC11: a ray through an edge must hit the closed polygon");
+
+        // TC12: ray through the middle of edge CD (1 point (-0.5,1,0.5))
+        assertEquals(List.of(new Point3D(-0.5, 1, 0.5)), polygon.findIntersections(down(-0.5, 1)),
+                "TC12: a ray through an edge must hit the closed polygon");
+
+        // TC13: ray through vertex B (1 point (1,0,0))
+        assertEquals(List.of(new Point3D(1, 0, 0)), polygon.findIntersections(down(1, 0)),
+                "TC13: a ray through a vertex must hit the closed polygon");
+
+        // TC14: ray through vertex D (1 point (-1,1,1))
+        assertEquals(List.of(new Point3D(-1, 1, 1)), polygon.findIntersections(down(-1, 1)),
+                "TC14: a ray through a vertex must hit the closed polygon");
+
+        // TC15: ray on the continuation of edge AB beyond B (0 points)
+        assertNull(polygon.findIntersections(down(2, 0)), "TC15: a ray on an edge's continuation must give null");
+
+        // TC16: ray on the continuation of edge AB beyond A (0 points)
+        assertNull(polygon.findIntersections(down(-1, 0)), "TC16: a ray on an edge's continuation must give null");
+
+        // TC17: ray parallel to the polygon, off its plane (0 points)
+        assertNull(polygon.findIntersections(new Ray(new Point3D(0, 0, 5), new Vector(1, -1, 0))),
+                "TC17: a ray parallel to the polygon must give null");
+
+        // TC18: ray lying in the polygon's plane and crossing the polygon (0 points)
+        assertNull(polygon.findIntersections(new Ray(new Point3D(2, -0.5, -0.5), new Vector(-1.75, 0.75, 1))),
+                "TC18: a ray inside the polygon's plane must give null");
+
+        // TC19: ray starting on the polygon (0 points)
+        assertNull(polygon.findIntersections(new Ray(new Point3D(0.25, 0.25, 0.5), new Vector(0, 0, 1))),
+                "TC19: a ray starting on the polygon must give null");
+    }
+
+    /**
+     * Test method for {@link geometries.Intersectable#findGeoIntersections(primitives.Ray, double)} on a polygon.
+     */
+    @Test
+    void testFindGeoIntersectionsMaxDistance() {
+        // an axis-aligned square at z = 0, hit by a ray from (1,1,3) straight down at distance 3
+        Polygon square = new Polygon(new Point3D(0, 0, 0), new Point3D(2, 0, 0), new Point3D(2, 2, 0),
+                new Point3D(0, 2, 0));
+        Ray ray = new Ray(new Point3D(1, 1, 3), new Vector(0, 0, -1));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: max distance beyond the point (1 point (1,1,0), the polygon named)
+        List<GeoPoint> result = square.findGeoIntersections(ray, 10);
+        assertEquals(List.of(new GeoPoint(square, new Point3D(1, 1, 0))), result, "TC01: wrong intersection");
+        assertSame(square, result.get(0).geometry, "TC01: wrong geometry in the GeoPoint");
+
+        // TC02: max distance before the point (null)
+        assertNull(square.findGeoIntersections(ray, 2), "TC02: a point beyond the max distance must be excluded");
+
+        // ===== Boundary Values Tests =====
+        // TC11: max distance exactly at the point (1 point)
+        assertEquals(List.of(new GeoPoint(square, new Point3D(1, 1, 0))), square.findGeoIntersections(ray, 3),
+                "TC11: a point exactly at the max distance must be included");
+    }
+
+    /**
+     * Two closed quadrangles sharing an edge leave no seam: every ray aimed at the shared edge hits one of them.
+     */
+    @Test
+    void testSharedEdgeNoSeam() {
+        // ===== Boundary Values Tests =====
+        // TC11: rays from an oblique eye at 1001 points along the shared edge x = 1 all hit (at least 1 point)
+        Polygon left = new Polygon(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(1, 1, 0), new Point3D(0, 1, 0));
+        Polygon right = new Polygon(new Point3D(1, 0, 0), new Point3D(2.5, 0, 0), new Point3D(2.5, 1, 0),
+                new Point3D(1, 1, 0));
+        Point3D eye = new Point3D(0.31, -0.77, 2.9);
+        for (int k = 0; k <= 1000; ++k) {
+            Point3D target = new Point3D(1, k / 1000.0, 0);
+            Ray ray = new Ray(eye, target.subtract(eye));
+            List<Point3D> l = left.findIntersections(ray);
+            List<Point3D> r = right.findIntersections(ray);
+            assertTrue(l != null || r != null, "TC11: seam between the polygons at " + target);
+            Point3D hit = l != null ? l.get(0) : r.get(0);
+            assertEquals(target.getX(), hit.getX(), 1e-9, "TC11: wrong hit point x at " + target);
+            assertEquals(target.getY(), hit.getY(), 1e-9, "TC11: wrong hit point y at " + target);
+            assertEquals(0, hit.getZ(), 1e-9, "TC11: wrong hit point z at " + target);
+        }
+        assertNotNull(left.findIntersections(new Ray(eye, new Point3D(1, 1, 0).subtract(eye))),
+                "TC11: the shared corner must hit the closed polygon");
+    }
+}

@@ -1,0 +1,340 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+import geometries.Intersectable.GeoPoint;
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * Unit tests for {@link geometries.Triangle}, including watertightness of triangles sharing an edge.
+ */
+class TriangleTest {
+    private static final Point3D P1 = new Point3D(1, 0, 0);
+    private static final Point3D P2 = new Point3D(0, 1, 0);
+    private static final Point3D P3 = new Point3D(0, 0, 1);
+
+    /**
+     * The triangle in the plane x + y + z = 1; seen along z its projection is (1,0), (0,1), (0,0), and a
+     * point (x, y) of the projection lies on the triangle at (x, y, 1 - x - y).
+     */
+    private final Triangle triangle = new Triangle(P1, P2, P3);
+
+    /**
+     * A ray straight down (along -z) from above the point (x, y) of the projection.
+     *
+     * @param x projected x
+     * @param y projected y
+     * @return the ray from (x, y, 5) toward (0, 0, -1)
+     */
+    private static Ray down(double x, double y) {
+        return new Ray(new Point3D(x, y, 5), new Vector(0, 0, -1));
+    }
+
+    /**
+     * Asserts that an exception's message contains a word.
+     *
+     * @param message the case label
+     * @param word    the word the message must contain
+     * @param e       the exception
+     */
+    private static void assertMessage(String message, String word, IllegalArgumentException e) {
+        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
+                message + ": the message must contain \"" + word + "\" but is: " + e.getMessage());
+    }
+
+    /**
+     * Test method for {@link geometries.Triangle#Triangle(primitives.Point3D, primitives.Point3D, primitives.Point3D)}.
+     */
+    @Test
+    void testConstructor() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a correct triangle is accepted and keeps its vertices in order
+        Triangle t = assertDoesNotThrow(() -> new Triangle(P1, P2, P3), "TC01: failed constructing a correct triangle");
+        assertEquals(List.of(P1, P2, P3), t.getVertices(), "TC01: wrong vertices");
+
+        // TC02: a null vertex is rejected
+        assertThrows(IllegalArgumentException.class, () -> new Triangle(P1, null, P3), "TC02: null vertex must throw");
+
+        // ===== Boundary Values Tests =====
+        // TC11: three distinct collinear vertices (the middle one on the edge of the others)
+        assertMessage("TC11", "collinear", assertThrows(IllegalArgumentException.class,
+                () -> new Triangle(new Point3D(0, 0, 0), new Point3D(1, 1, 1), new Point3D(2, 2, 2)),
+                "TC11: collinear vertices must throw"));
+
+        // TC12: collinear vertices with the middle one given last
+        assertMessage("TC12", "collinear", assertThrows(IllegalArgumentException.class,
+                () -> new Triangle(new Point3D(0, 0, 0), new Point3D(4, 0, 0), new Point3D(1, 0, 0)),
+                "TC12: collinear vertices must throw"));
+
+        // TC13: first and second vertices coincide
+        assertMessage("TC13", "coincide", assertThrows(IllegalArgumentException.class,
+                () -> new Triangle(P1, new Point3D(1, 0, 0), P3), "TC13: coincident vertices must throw"));
+
+        // TC14: first and third vertices coincide
+        assertMessage("TC14", "coincide", assertThrows(IllegalArgumentException.class,
+                () -> new Triangle(P1, P2, new Point3D(1, 0, 0)), "TC14: coincident vertices must throw"));
+    }
+
+    /**
+     * Test method for {@link geometries.Triangle#getNormal(primitives.Point3D)}.
+     */
+    @Test
+    void testGetNormal() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: unit normal ±(1,1,1)/sqrt3, orthogonal to every edge
+        Vector n = triangle.getNormal(new Point3D(1d / 3, 1d / 3, 1d / 3));
+        assertEquals(1, n.length(), 1e-10, "TC01: normal is not a unit vector");
+        assertEquals(0, n.dotProduct(P2.subtract(P1)), 1e-10, "TC01: normal not orthogonal to edge P1P2");
+        assertEquals(0, n.dotProduct(P3.subtract(P2)), 1e-10, "TC01: normal not orthogonal to edge P2P3");
+        assertEquals(0, n.dotProduct(P1.subtract(P3)), 1e-10, "TC01: normal not orthogonal to edge P3P1");
+        double s = 1 / Math.sqrt(3);
+        assertTrue(n.equals(new Vector(s, s, s)) || n.equals(new Vector(-s, -s, -s)), "TC01: wrong normal " + n);
+    }
+
+    /**
+     * Test method for {@link geometries.Triangle#findIntersections(primitives.Ray)}.
+     */
+    @Test
+    void testFindIntersections() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: ray hits inside the triangle (1 point (0.25,0.25,0.5))
+        assertEquals(List.of(new Point3D(0.25, 0.25, 0.5)), triangle.findIntersections(down(0.25, 0.25)),
+                "TC01: wrong intersection point inside the triangle");
+
+        // TC02: ray passes outside, against edge P1P2 (0 points)
+        assertNull(triangle.findIntersections(down(0.75, 0.75)), "TC02: ray outside against an edge must give null");
+
+        // TC03: ray passes outside, against vertex P3 (0 points)
+        assertNull(triangle.findIntersections(down(-0.5, -0.5)), "TC03: ray outside against a vertex must give null");
+
+        // TC04: triangle behind the ray (0 points)
+        assertNull(triangle.findIntersections(new Ray(new Point3D(0.25, 0.25, -5), new Vector(0, 0, -1))),
+                "TC04: triangle behind the ray must give null");
+
+        // TC05: ray from the other side hits inside (1 point (0.25,0.25,0.5))
+        assertEquals(List.of(new Point3D(0.25, 0.25, 0.5)),
+                triangle.findIntersections(new Ray(new Point3D(0.25, 0.25, -5), new Vector(0, 0, 1))),
+                "TC05: wrong intersection point from the other side");
+
+        // TC06: oblique ray hits inside (1 point (0.2,0.3,0.5))
+        assertEquals(List.of(new Point3D(0.2, 0.3, 0.5)),
+                triangle.findIntersections(new Ray(new Point3D(-1, 2, 3), new Vector(1.2, -1.7, -2.5))),
+                "TC06: wrong intersection point for an oblique ray");
+
+        // ===== Boundary Values Tests =====
+        // TC11: ray through the middle of edge P1P2: triangles are closed, so it hits (1 point (0.5,0.5,0))
+        assertEquals(List.of(new Point3D(0.5, 0.5, 0)), triangle.findIntersections(down(0.5, 0.5)),
+                "TC11: a ray through an edge must hit the closed triangle");
+
+        // TC12: ray through edge P3P1 (1 point (0.3,0,0.7))
+        assertEquals(List.of(new Point3D(0.3, 0, 0.7)), triangle.findIntersections(down(0.3, 0)),
+                "TC12: a ray through an edge must hit the closed triangle");
+
+        // TC13: ray through vertex P1 (1 point (1,0,0))
+        assertEquals(List.of(new Point3D(1, 0, 0)), triangle.findIntersections(down(1, 0)),
+                "TC13: a ray through a vertex must hit the closed triangle");
+
+        // TC14: ray through vertex P3 (1 point (0,0,1))
+        assertEquals(List.of(new Point3D(0, 0, 1)), triangle.findIntersections(down(0, 0)),
+                "TC14: a ray through a vertex must hit the closed triangle");
+
+        // TC15: ray on the continuation of edge P3P1 beyond P1 (0 points)
+        assertNull(triangle.findIntersections(down(2, 0)), "TC15: a ray on an edge's continuation must give null");
+
+        // TC16: ray on the continuation of edge P1P2 beyond P2 (0 points)
+        assertNull(triangle.findIntersections(down(-1, 2)), "TC16: a ray on an edge's continuation must give null");
+
+        // TC17: ray parallel to the triangle, off its plane (0 points)
+        assertNull(triangle.findIntersections(new Ray(new Point3D(0, 0, 5), new Vector(1, -1, 0))),
+                "TC17: a ray parallel to the triangle must give null");
+
+        // TC18: ray lying in the triangle's plane and crossing the triangle (0 points)
+        assertNull(triangle.findIntersections(new Ray(new Point3D(2, -0.5, -0.5), new Vector(-1.75, 0.75, 1))),
+                "TC18: a ray inside the triangle's plane must give null");
+
+        // TC19: ray starting on the triangle (0 points)
+        assertNull(triangle.findIntersections(new Ray(new Point3D(0.25, 0.25, 0.5), new Vector(0, 0, 1))),
+                "TC19: a ray starting on the triangle must give null");
+    }
+
+    /**
+     * Test method for {@link geometries.Intersectable#findGeoIntersections(primitives.Ray, double)} on a triangle.
+     */
+    @Test
+    void testFindGeoIntersectionsMaxDistance() {
+        // an axis-aligned triangle at z = 0, hit by a ray from (0.5,0.5,3) straight down at distance 3
+        Triangle t = new Triangle(new Point3D(0, 0, 0), new Point3D(2, 0, 0), new Point3D(0, 2, 0));
+        Ray ray = new Ray(new Point3D(0.5, 0.5, 3), new Vector(0, 0, -1));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: max distance beyond the point (1 point (0.5,0.5,0), the triangle named)
+        List<GeoPoint> result = t.findGeoIntersections(ray, 10);
+        assertEquals(List.of(new GeoPoint(t, new Point3D(0.5, 0.5, 0))), result, "TC01: wrong intersection");
+        assertSame(t, result.get(0).geometry, "TC01: wrong geometry in the GeoPoint");
+
+        // TC02: max distance before the point (null)
+        assertNull(t.findGeoIntersections(ray, 2), "TC02: a point beyond the max distance must be excluded");
+
+        // ===== Boundary Values Tests =====
+        // TC11: max distance exactly at the point (1 point)
+        assertEquals(List.of(new GeoPoint(t, new Point3D(0.5, 0.5, 0))), t.findGeoIntersections(ray, 3),
+                "TC11: a point exactly at the max distance must be included");
+    }
+
+    /**
+     * Casts every ray of a grid from an eye at the square split into two triangles along a diagonal and
+     * asserts that each hits at least one of them.
+     *
+     * @param label  the case label
+     * @param t1     first triangle
+     * @param t2     second triangle
+     * @param eye    the rays' start
+     * @param corner the square's corner at grid (0,0)
+     * @param u      the square's edge from the corner along the grid's first index
+     * @param v      the square's edge from the corner along the grid's second index
+     * @param n      the number of cells along each edge (the grid has (n+1)^2 targets)
+     */
+    private static void assertNoSeam(String label, Triangle t1, Triangle t2, Point3D eye, Point3D corner, Vector u,
+            Vector v, int n) {
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j) {
+                Point3D target = corner;
+                if (i > 0)
+                    target = target.add(u.scale((double) i / n));
+                if (j > 0)
+                    target = target.add(v.scale((double) j / n));
+                Ray ray = new Ray(eye, target.subtract(eye));
+                assertTrue(t1.findIntersections(ray) != null || t2.findIntersections(ray) != null,
+                        label + ": no triangle hit at grid (" + i + "," + j + "), target " + target);
+            }
+    }
+
+    /**
+     * Two triangles sharing a diagonal of a square are watertight: no ray aimed at the square slips between them.
+     */
+    @Test
+    void testWatertightSharedDiagonal() {
+        // the unit square at z = 0 split along its diagonal y = x
+        Point3D a = new Point3D(0, 0, 0);
+        Point3D b = new Point3D(1, 0, 0);
+        Point3D c = new Point3D(1, 1, 0);
+        Point3D d = new Point3D(0, 1, 0);
+        Triangle t1 = new Triangle(a, b, c);
+        Triangle t2 = new Triangle(a, c, d);
+        Vector u = new Vector(1, 0, 0);
+        Vector v = new Vector(0, 1, 0);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a 200x200 grid (201x201 targets, diagonal and border included) from an oblique eye: every ray hits
+        assertNoSeam("TC01", t1, t2, new Point3D(0.3137, -0.7071, 2.4142), a, u, v, 200);
+
+        // TC02: the same grid seen from below the square: every ray hits
+        assertNoSeam("TC02", t1, t2, new Point3D(1.7, 0.2, -3.3), a, u, v, 200);
+
+        // TC03: a tilted square in space with irrational edges, split along its diagonal: every ray hits
+        Vector tu = new Vector(Math.sqrt(2), Math.sqrt(3), -Math.PI).normalized().scale(3.7);
+        Vector tv = tu.crossProduct(new Vector(0.3, -1.1, 0.7)).normalized().scale(3.7);
+        Point3D ta = new Point3D(-12.345, 6.789, -40.4);
+        Point3D tb = ta.add(tu);
+        Point3D tc = tb.add(tv);
+        Point3D td = ta.add(tv);
+        Triangle s1 = new Triangle(ta, tb, tc);
+        Triangle s2 = new Triangle(ta, tc, td);
+        Point3D eye = ta.add(tu.crossProduct(tv).normalized().scale(17)).add(new Vector(1.1, -2.3, 0.7));
+        assertNoSeam("TC03", s1, s2, eye, ta, tu, tv, 200);
+
+        // TC04: rays aimed at points strictly outside the square miss both triangles (0 points)
+        Point3D eye4 = new Point3D(0.3137, -0.7071, 2.4142);
+        for (Point3D target : List.of(new Point3D(1.01, 0.5, 0), new Point3D(-0.01, 0.5, 0), new Point3D(0.5, 1.01, 0),
+                new Point3D(0.5, -0.01, 0), new Point3D(1.01, 1.01, 0))) {
+            Ray ray = new Ray(eye4, target.subtract(eye4));
+            assertNull(t1.findIntersections(ray), "TC04: ray to " + target + " must miss the first triangle");
+            assertNull(t2.findIntersections(ray), "TC04: ray to " + target + " must miss the second triangle");
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: 20000 seeded random rays from random eyes on both sides aimed exactly at points of the shared
+        // diagonal: every ray hits at least one triangle, at the diagonal point
+        Random random = new Random(20240611L);
+        for (int k = 0; k < 20000; ++k) {
+            double s = random.nextDouble();
+            Point3D target = new Point3D(s, s, 0);
+            Point3D from = new Point3D(random.nextDouble() * 6 - 3, random.nextDouble() * 6 - 3,
+                    (random.nextBoolean() ? 1 : -1) * (0.1 + random.nextDouble() * 5));
+            Ray ray = new Ray(from, target.subtract(from));
+            List<Point3D> h1 = t1.findIntersections(ray);
+            List<Point3D> h2 = t2.findIntersections(ray);
+            assertTrue(h1 != null || h2 != null, "TC11: seam on the diagonal at " + target + " from " + from);
+            Point3D hit = h1 != null ? h1.get(0) : h2.get(0);
+            assertEquals(s, hit.getX(), 1e-9, "TC11: wrong hit x on the diagonal from " + from);
+            assertEquals(s, hit.getY(), 1e-9, "TC11: wrong hit y on the diagonal from " + from);
+            assertEquals(0, hit.getZ(), 1e-9, "TC11: wrong hit z on the diagonal from " + from);
+        }
+
+        // TC12: straight-down rays exactly above the diagonal (the direction has no x, y part): every ray hits
+        for (int k = 0; k <= 1000; ++k) {
+            double s = k / 1000.0;
+            Ray ray = new Ray(new Point3D(s, s, 1), new Vector(0, 0, -1));
+            assertTrue(t1.findIntersections(ray) != null || t2.findIntersections(ray) != null,
+                    "TC12: seam on the diagonal at (" + s + "," + s + ",0)");
+        }
+    }
+
+    /**
+     * A triangle and the polygon with the same three vertices agree on hit or miss, and on the point, for
+     * thousands of seeded random rays.
+     */
+    @Test
+    void testAgreesWithPolygon() {
+        List<Point3D[]> triangles = List.of(
+                new Point3D[] { P1, P2, P3 },
+                new Point3D[] { new Point3D(-150, -150, -115), new Point3D(150, -150, -135), new Point3D(75, 75, -150) },
+                new Point3D[] { new Point3D(0.1, -2, 3), new Point3D(4.2, 1.3, -0.7), new Point3D(-1.9, 2.6, 1.1) });
+        Random random = new Random(77L);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 3 x 2000 rays from random points aimed around each triangle (about a third hit):
+        // Triangle and Polygon give the same result, and the same point when they hit
+        int hits = 0;
+        int misses = 0;
+        for (Point3D[] v : triangles) {
+            Triangle t = new Triangle(v[0], v[1], v[2]);
+            Polygon p = new Polygon(v[0], v[1], v[2]);
+            double scale = v[0].distance(v[1]) + v[1].distance(v[2]);
+            Vector e1 = v[1].subtract(v[0]);
+            Vector e2 = v[2].subtract(v[0]);
+            for (int k = 0; k < 2000; ++k) {
+                // a target with barycentric weights in [-0.2, 1.0): inside or outside the triangle
+                double wu = random.nextDouble() * 1.2 - 0.2;
+                double wv = random.nextDouble() * 1.2 - 0.2;
+                Point3D target = v[0].add(e1.scale(wu == 0 ? 1e-3 : wu)).add(e2.scale(wv == 0 ? 1e-3 : wv));
+                Point3D from = target.add(new Vector(random.nextDouble() - 0.5, random.nextDouble() - 0.5,
+                        random.nextDouble() - 0.5).scale(4 * scale));
+                Ray ray = new Ray(from, target.subtract(from));
+                List<Point3D> rt = t.findIntersections(ray);
+                List<Point3D> rp = p.findIntersections(ray);
+                assertEquals(rp == null, rt == null, "TC01: Triangle and Polygon disagree on hit/miss for " + ray);
+                if (rt != null) {
+                    ++hits;
+                    assertEquals(1, rt.size(), "TC01: a triangle is hit at most once");
+                    assertEquals(0, rp.get(0).distance(rt.get(0)), 1e-9 * scale,
+                            "TC01: Triangle and Polygon disagree on the point for " + ray);
+                } else
+                    ++misses;
+            }
+        }
+        assertTrue(hits > 1000 && misses > 1000, "TC01: the random rays must both hit and miss: " + hits + "/" + misses);
+    }
+}

@@ -1,0 +1,191 @@
+package primitives;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * Unit tests for {@link primitives.Material}.
+ */
+class MaterialTest {
+
+    /** Asserts that a thrown exception's message contains a given word. */
+    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
+        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
+                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
+    }
+
+    /** Test method for the defaults of {@link primitives.Material}. */
+    @Test
+    void testDefaults() {
+        Material m = new Material();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: every factor defaults to 0
+        assertEquals(0, m.getKd(), 0, "TC01: default kD must be 0");
+        assertEquals(0, m.getKs(), 0, "TC01: default kS must be 0");
+        assertEquals(0, m.getKt(), 0, "TC01: default kT must be 0");
+        assertEquals(0, m.getKr(), 0, "TC01: default kR must be 0");
+        assertEquals(0, m.getShininess(), "TC01: default shininess must be 0");
+    }
+
+    /** Test method for the chaining of the setters of {@link primitives.Material}. */
+    @Test
+    void testChaining() {
+        Material m = new Material();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: each setter returns the material itself
+        assertSame(m, m.setKd(0.5), "TC01: setKd must return this");
+        assertSame(m, m.setKs(0.25), "TC01: setKs must return this");
+        assertSame(m, m.setKt(0.3), "TC01: setKt must return this");
+        assertSame(m, m.setKr(0.7), "TC01: setKr must return this");
+        assertSame(m, m.setShininess(30), "TC01: setShininess must return this");
+        // TC02: a chain sets every value: kD .3, kS .4, kT .5, kR .6, shininess 20
+        Material c = new Material().setKd(0.3).setKs(0.4).setKt(0.5).setKr(0.6).setShininess(20);
+        assertEquals(0.3, c.getKd(), 0, "TC02: wrong kD");
+        assertEquals(0.4, c.getKs(), 0, "TC02: wrong kS");
+        assertEquals(0.5, c.getKt(), 0, "TC02: wrong kT");
+        assertEquals(0.6, c.getKr(), 0, "TC02: wrong kR");
+        assertEquals(20, c.getShininess(), "TC02: wrong shininess");
+    }
+
+    /** Test method for {@link primitives.Material#setKd(double)}. */
+    @Test
+    void testSetKd() {
+        Material m = new Material().setKd(0.5);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 0.8 is kept
+        assertEquals(0.8, m.setKd(0.8).getKd(), 0, "TC01: wrong kD");
+        // TC02: negative kD is rejected, the message names kD and "negative"; kD stays 0.8
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> m.setKd(-0.1),
+                "TC02: negative kD must be rejected");
+        assertMessage(e, "kD", "TC02");
+        assertMessage(e, "negative", "TC02");
+        assertEquals(0.8, m.getKd(), 0, "TC02: a rejected kD must not change the material");
+        // TC03: NaN and infinite kD are rejected ("finite")
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKd(Double.NaN), "TC03: NaN kD must be rejected");
+        assertMessage(e, "finite", "TC03");
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKd(Double.POSITIVE_INFINITY),
+                "TC03: infinite kD must be rejected");
+        assertMessage(e, "finite", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC10: 0 is accepted (0)
+        assertEquals(0, m.setKd(0).getKd(), 0, "TC10: kD 0 must be accepted");
+    }
+
+    /** Test method for {@link primitives.Material#setKs(double)}. */
+    @Test
+    void testSetKs() {
+        Material m = new Material();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 0.8 is kept
+        assertEquals(0.8, m.setKs(0.8).getKs(), 0, "TC01: wrong kS");
+        // TC02: negative kS is rejected, the message names kS and "negative"; kS stays 0.8
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> m.setKs(-2),
+                "TC02: negative kS must be rejected");
+        assertMessage(e, "kS", "TC02");
+        assertMessage(e, "negative", "TC02");
+        assertEquals(0.8, m.getKs(), 0, "TC02: a rejected kS must not change the material");
+        // TC03: NaN kS is rejected ("finite")
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKs(Double.NaN), "TC03: NaN kS must be rejected");
+        assertMessage(e, "finite", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC10: 0 is accepted (0)
+        assertEquals(0, m.setKs(0).getKs(), 0, "TC10: kS 0 must be accepted");
+        // TC11: the negative value closest to 0 is rejected (-Double.MIN_VALUE)
+        assertThrows(IllegalArgumentException.class, () -> m.setKs(-Double.MIN_VALUE),
+                "TC11: -MIN_VALUE kS must be rejected");
+    }
+
+    /** Test method for {@link primitives.Material#setKt(double)}. */
+    @Test
+    void testSetKt() {
+        Material m = new Material();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 0.5 is kept
+        assertEquals(0.5, m.setKt(0.5).getKt(), 0, "TC01: wrong kT");
+        // TC02: above 1 is rejected, the message names kT; kT stays 0.5
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> m.setKt(2),
+                "TC02: kT above 1 must be rejected");
+        assertMessage(e, "kT", "TC02");
+        assertMessage(e, "at most 1", "TC02");
+        assertEquals(0.5, m.getKt(), 0, "TC02: a rejected kT must not change the material");
+        // TC03: negative is rejected, the message names kT and "negative"
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKt(-0.5), "TC03: negative kT must be rejected");
+        assertMessage(e, "kT", "TC03");
+        assertMessage(e, "negative", "TC03");
+        // TC04: NaN is rejected ("finite")
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKt(Double.NaN), "TC04: NaN kT must be rejected");
+        assertMessage(e, "finite", "TC04");
+
+        // ===== Boundary Values Tests =====
+        // TC10: 0 is accepted (0)
+        assertEquals(0, m.setKt(0).getKt(), 0, "TC10: kT 0 must be accepted");
+        // TC11: 1 is accepted (1)
+        assertEquals(1, m.setKt(1).getKt(), 0, "TC11: kT 1 must be accepted");
+        // TC12: just above 1 is rejected (1.0001)
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKt(1.0001), "TC12: kT 1.0001 must be rejected");
+        assertMessage(e, "kT", "TC12");
+        // TC13: just below 0 is rejected (-0.0001)
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKt(-0.0001), "TC13: kT -0.0001 must be rejected");
+        assertMessage(e, "kT", "TC13");
+    }
+
+    /** Test method for {@link primitives.Material#setKr(double)}. */
+    @Test
+    void testSetKr() {
+        Material m = new Material();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 0.5 is kept
+        assertEquals(0.5, m.setKr(0.5).getKr(), 0, "TC01: wrong kR");
+        // TC02: above 1 is rejected, the message names kR; kR stays 0.5
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> m.setKr(1.5),
+                "TC02: kR above 1 must be rejected");
+        assertMessage(e, "kR", "TC02");
+        assertMessage(e, "at most 1", "TC02");
+        assertEquals(0.5, m.getKr(), 0, "TC02: a rejected kR must not change the material");
+        // TC03: negative is rejected, the message names kR and "negative"
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKr(-1), "TC03: negative kR must be rejected");
+        assertMessage(e, "kR", "TC03");
+        assertMessage(e, "negative", "TC03");
+        // TC04: NaN is rejected ("finite")
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKr(Double.NaN), "TC04: NaN kR must be rejected");
+        assertMessage(e, "finite", "TC04");
+
+        // ===== Boundary Values Tests =====
+        // TC10: 0 is accepted (0)
+        assertEquals(0, m.setKr(0).getKr(), 0, "TC10: kR 0 must be accepted");
+        // TC11: 1 is accepted (1)
+        assertEquals(1, m.setKr(1).getKr(), 0, "TC11: kR 1 must be accepted");
+        // TC12: just above 1 is rejected (1.0001)
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKr(1.0001), "TC12: kR 1.0001 must be rejected");
+        assertMessage(e, "kR", "TC12");
+        // TC13: just below 0 is rejected (-0.0001)
+        e = assertThrows(IllegalArgumentException.class, () -> m.setKr(-0.0001), "TC13: kR -0.0001 must be rejected");
+        assertMessage(e, "kR", "TC13");
+    }
+
+    /** Test method for {@link primitives.Material#setShininess(int)}. */
+    @Test
+    void testSetShininess() {
+        Material m = new Material();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 60 is kept
+        assertEquals(60, m.setShininess(60).getShininess(), "TC01: wrong shininess");
+        // TC02: negative shininess is rejected, the message names shininess and "negative"; stays 60
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> m.setShininess(-5),
+                "TC02: negative shininess must be rejected");
+        assertMessage(e, "shininess", "TC02");
+        assertMessage(e, "negative", "TC02");
+        assertEquals(60, m.getShininess(), "TC02: a rejected shininess must not change the material");
+
+        // ===== Boundary Values Tests =====
+        // TC10: 0 is accepted (0)
+        assertEquals(0, m.setShininess(0).getShininess(), "TC10: shininess 0 must be accepted");
+        // TC11: -1 is rejected
+        e = assertThrows(IllegalArgumentException.class, () -> m.setShininess(-1),
+                "TC11: shininess -1 must be rejected");
+        assertMessage(e, "shininess", "TC11");
+    }
+}

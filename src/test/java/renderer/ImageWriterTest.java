@@ -1,0 +1,216 @@
+package renderer;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Random;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.Test;
+
+import primitives.Color;
+
+/**
+ * Unit tests for {@link renderer.ImageWriter}. Files are written only under {@code target/test-images}.
+ */
+class ImageWriterTest {
+    /** The folder test pictures go to (never the checked-in images/). */
+    private static final Path TEST_FOLDER = Path.of("target", "test-images");
+
+    /** Asserts that a thrown exception's message contains a given word. */
+    private static void assertMessage(Exception e, String word, String tc) {
+        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
+                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
+    }
+
+    /** Asserts an AWT colour's exact components. */
+    private static void assertRgb(int r, int g, int b, java.awt.Color c, String message) {
+        assertEquals(r, c.getRed(), message + " (red)");
+        assertEquals(g, c.getGreen(), message + " (green)");
+        assertEquals(b, c.getBlue(), message + " (blue)");
+    }
+
+    /** @return a folder name under target/test-images that no other run uses */
+    private static Path uniqueFolder(String prefix) {
+        return TEST_FOLDER.resolve(prefix + "-" + ProcessHandle.current().pid() + "-" + System.nanoTime());
+    }
+
+    /** Deletes the given paths when they exist, in order (files first, then their folders). */
+    private static void deleteAll(Path... paths) throws IOException {
+        for (Path p : paths)
+            Files.deleteIfExists(p);
+    }
+
+    /** Test method for {@link renderer.ImageWriter#ImageWriter(String, int, int)} and the size getters. */
+    @Test
+    void testConstructor() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an 800×500 image reports nX 800, nY 500
+        ImageWriter writer = new ImageWriter("size", 800, 500);
+        assertEquals(800, writer.getNx(), "TC01: wrong nX");
+        assertEquals(500, writer.getNy(), "TC01: wrong nY");
+        // TC02: a new image is black: pixel (0, 0) and (799, 499) are (0, 0, 0)
+        assertRgb(0, 0, 0, writer.getPixel(0, 0), "TC02: new image must be black");
+        assertRgb(0, 0, 0, writer.getPixel(799, 499), "TC02: new image must be black");
+        // TC03: negative sizes are rejected, the message names the "image size"
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new ImageWriter("bad", -5, 10), "TC03: negative nX must be rejected");
+        assertMessage(e, "image size", "TC03");
+        e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("bad", 10, -5),
+                "TC03: negative nY must be rejected");
+        assertMessage(e, "image size", "TC03");
+        // TC04: a null or blank name is rejected, the message names the "image name"
+        e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter(null, 10, 10),
+                "TC04: null name must be rejected");
+        assertMessage(e, "image name", "TC04");
+        e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("  ", 10, 10),
+                "TC04: blank name must be rejected");
+        assertMessage(e, "image name", "TC04");
+        // TC05: a null folder is rejected, the message names the "folder"
+        e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("bad", 10, 10, null),
+                "TC05: null folder must be rejected");
+        assertMessage(e, "folder", "TC05");
+
+        // ===== Boundary Values Tests =====
+        // TC10: size 0 is rejected, the message names the "image size"
+        e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("bad", 0, 10),
+                "TC10: nX 0 must be rejected");
+        assertMessage(e, "image size", "TC10");
+        e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("bad", 10, 0),
+                "TC10: nY 0 must be rejected");
+        assertMessage(e, "image size", "TC10");
+        // TC11: a 1×1 image is accepted: nX 1, nY 1
+        ImageWriter tiny = new ImageWriter("tiny", 1, 1);
+        assertEquals(1, tiny.getNx(), "TC11: wrong nX");
+        assertEquals(1, tiny.getNy(), "TC11: wrong nY");
+    }
+
+    /** Test method for {@link renderer.ImageWriter#getPath()}. */
+    @Test
+    void testGetPath() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: by default the file is images/<name>.png
+        assertEquals(Path.of("images", "sphere.png"), new ImageWriter("sphere", 10, 10).getPath(),
+                "TC01: wrong default path");
+        // TC02: with a folder the file is <folder>/<name>.png
+        Path folder = TEST_FOLDER.resolve("nested").resolve("deeper");
+        assertEquals(folder.resolve("scene A.png"), new ImageWriter("scene A", 10, 10, folder).getPath(),
+                "TC02: wrong path in a given folder");
+    }
+
+    /** Test method for {@link renderer.ImageWriter#writePixel(int, int, primitives.Color)} and {@link renderer.ImageWriter#getPixel(int, int)}. */
+    @Test
+    void testWritePixel() {
+        ImageWriter writer = new ImageWriter("pixels", 4, 3);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an in-range colour reads back as written, components truncated: (10.9, 20.2, 254.99) -> (10, 20, 254)
+        writer.writePixel(1, 2, new Color(10.9, 20.2, 254.99));
+        assertRgb(10, 20, 254, writer.getPixel(1, 2), "TC01: wrong pixel read back");
+        // TC02: components above 255 are clamped: (300, 1000, 40) -> (255, 255, 40)
+        writer.writePixel(2, 1, new Color(300, 1000, 40));
+        assertRgb(255, 255, 40, writer.getPixel(2, 1), "TC02: colour must be clamped at 255");
+        // TC03: writing one pixel leaves its neighbours black (0, 0, 0)
+        assertRgb(0, 0, 0, writer.getPixel(2, 2), "TC03: neighbour pixel changed");
+        assertRgb(0, 0, 0, writer.getPixel(1, 1), "TC03: neighbour pixel changed");
+        // TC04: writing again overwrites: (1, 2, 3)
+        writer.writePixel(1, 2, new Color(1, 2, 3));
+        assertRgb(1, 2, 3, writer.getPixel(1, 2), "TC04: pixel must be overwritten");
+        // TC05: pixels out of the 4×3 image are rejected, the message says "outside"
+        for (int[] xy : new int[][] { { -1, 0 }, { 0, -1 }, { 4, 0 }, { 0, 3 }, { 100, 100 } }) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> writer.writePixel(xy[0], xy[1], new Color(1, 1, 1)),
+                    "TC05: pixel (" + xy[0] + ", " + xy[1] + ") must be rejected");
+            assertMessage(e, "outside", "TC05");
+            e = assertThrows(IllegalArgumentException.class, () -> writer.getPixel(xy[0], xy[1]),
+                    "TC05: reading pixel (" + xy[0] + ", " + xy[1] + ") must be rejected");
+            assertMessage(e, "outside", "TC05");
+        }
+        // TC06: a null colour is rejected, the message names the "colour"
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> writer.writePixel(0, 0, null), "TC06: null colour must be rejected");
+        assertMessage(e, "colour", "TC06");
+
+        // ===== Boundary Values Tests =====
+        // TC10: the corners (0, 0) and (3, 2) are writable: (7, 8, 9) and (255, 0, 128)
+        writer.writePixel(0, 0, new Color(7, 8, 9));
+        writer.writePixel(3, 2, new Color(255, 0, 128));
+        assertRgb(7, 8, 9, writer.getPixel(0, 0), "TC10: wrong corner pixel");
+        assertRgb(255, 0, 128, writer.getPixel(3, 2), "TC10: wrong corner pixel");
+        // TC11: exactly 255 and just above (255.999) give 255; just below 1 (0.999) gives 0
+        writer.writePixel(3, 0, new Color(255, 255.999, 0.999));
+        assertRgb(255, 255, 0, writer.getPixel(3, 0), "TC11: wrong truncation at the limits");
+        // TC12: black (0, 0, 0) is written as black
+        writer.writePixel(0, 2, Color.BLACK);
+        assertRgb(0, 0, 0, writer.getPixel(0, 2), "TC12: black must stay black");
+    }
+
+    /** Test method for {@link renderer.ImageWriter#writeToImage()}. */
+    @Test
+    void testWriteToImage() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a 16×9 image is written into a missing nested folder, which is created; the file is a PNG
+        // that ImageIO reads back with size 16×9 and exactly the same pixels
+        Path nested = uniqueFolder("nested");
+        Path folder = nested.resolve("deeper");
+        assertFalse(Files.exists(nested), "TC01: the folder must not exist before the test");
+        ImageWriter writer = new ImageWriter("random", 16, 9, folder);
+        Random random = new Random(42);
+        for (int y = 0; y < 9; ++y)
+            for (int x = 0; x < 16; ++x)
+                writer.writePixel(x, y,
+                        new Color(random.nextDouble() * 300, random.nextDouble() * 300, random.nextDouble() * 300));
+        Path file = folder.resolve("random.png");
+        try {
+            writer.writeToImage();
+            assertTrue(Files.isDirectory(folder), "TC01: the missing nested folder must be created");
+            assertTrue(Files.isRegularFile(file), "TC01: the file must be written");
+            assertEquals(file, writer.getPath(), "TC01: getPath must name the written file");
+            byte[] bytes = Files.readAllBytes(file);
+            byte[] signature = { (byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n' };
+            assertTrue(bytes.length > signature.length, "TC01: the file is too short to be a PNG");
+            for (int i = 0; i < signature.length; ++i)
+                assertEquals(signature[i], bytes[i], "TC01: the file is not a PNG (byte " + i + ")");
+            BufferedImage read = ImageIO.read(file.toFile());
+            assertNotNull(read, "TC01: ImageIO cannot read the file");
+            assertEquals(16, read.getWidth(), "TC01: wrong width read back");
+            assertEquals(9, read.getHeight(), "TC01: wrong height read back");
+            for (int y = 0; y < 9; ++y)
+                for (int x = 0; x < 16; ++x)
+                    assertEquals(writer.getPixel(x, y).getRGB() & 0xFFFFFF, read.getRGB(x, y) & 0xFFFFFF,
+                            "TC01: wrong pixel (" + x + ", " + y + ") read back");
+
+            // ===== Boundary Values Tests =====
+            // TC10: the folder now exists and the file is overwritten: pixel (0, 0) reads back (1, 2, 3)
+            writer.writePixel(0, 0, new Color(1, 2, 3));
+            writer.writeToImage();
+            BufferedImage again = ImageIO.read(file.toFile());
+            assertRgb(1, 2, 3, new java.awt.Color(again.getRGB(0, 0)), "TC10: the file must be overwritten");
+        } finally {
+            deleteAll(file, folder, nested);
+        }
+    }
+
+    /** Test method for {@link renderer.ImageWriter#writeToImage()} when the folder cannot be created. */
+    @Test
+    void testWriteToImageFailure() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the folder's parent is a regular file: an UncheckedIOException naming the image path
+        Files.createDirectories(TEST_FOLDER);
+        Path blocker = uniqueFolder("blocker");
+        Files.writeString(blocker, "not a folder");
+        try {
+            ImageWriter writer = new ImageWriter("blocked", 2, 2, blocker.resolve("sub"));
+            UncheckedIOException e = assertThrows(UncheckedIOException.class, writer::writeToImage,
+                    "TC01: an unwritable folder must fail");
+            assertMessage(e, "cannot write image", "TC01");
+            assertMessage(e, "blocked.png", "TC01");
+        } finally {
+            deleteAll(blocker);
+        }
+    }
+}
