@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.List;
 
@@ -43,18 +44,6 @@ class IntersectableTest {
     }
 
     /**
-     * Asserts that an exception's message contains a word.
-     *
-     * @param message the case label
-     * @param word    the word the message must contain
-     * @param e       the exception
-     */
-    private static void assertMessage(String message, String word, IllegalArgumentException e) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                message + ": the message must contain \"" + word + "\" but is: " + e.getMessage());
-    }
-
-    /**
      * Test method for {@link geometries.Intersectable.GeoPoint#equals(java.lang.Object)}.
      */
     @Test
@@ -83,8 +72,8 @@ class IntersectableTest {
         assertEquals(new Point3D(2, 0, 0), gp.point, "TC05: wrong point field");
 
         // TC06: a null point is rejected (no bare NullPointerException later in equals)
-        assertMessage("TC06", "point", assertThrows(IllegalArgumentException.class,
-                () -> new GeoPoint(sphere, null), "TC06: a null point must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new GeoPoint(sphere, null), "TC06: a null point must throw"), "point", "TC06");
 
         // ===== Boundary Values Tests =====
         // TC11: a GeoPoint equals itself
@@ -143,29 +132,32 @@ class IntersectableTest {
         assertEquals(7.5, fixed.askedDistance, 1e-10, "TC01: the max distance must reach the helper");
 
         // TC02: a negative distance is rejected
-        assertMessage("TC02", "distance", assertThrows(IllegalArgumentException.class,
-                () -> sphere.findGeoIntersections(ray, -1), "TC02: negative max distance must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> sphere.findGeoIntersections(ray, -1), "TC02: negative max distance must throw"),
+                "distance", "TC02");
 
         // TC03: NaN distance is rejected
-        assertMessage("TC03", "distance", assertThrows(IllegalArgumentException.class,
-                () -> sphere.findGeoIntersections(ray, Double.NaN), "TC03: NaN max distance must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> sphere.findGeoIntersections(ray, Double.NaN), "TC03: NaN max distance must throw"),
+                "distance", "TC03");
 
         // TC04: a null ray is rejected, by every query
-        assertMessage("TC04", "ray", assertThrows(IllegalArgumentException.class,
-                () -> sphere.findGeoIntersections(null, 1), "TC04: null ray must throw"));
-        assertMessage("TC04", "ray", assertThrows(IllegalArgumentException.class,
-                () -> sphere.findGeoIntersections(null), "TC04: null ray must throw"));
-        assertMessage("TC04", "ray", assertThrows(IllegalArgumentException.class,
-                () -> sphere.findIntersections(null), "TC04: null ray must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> sphere.findGeoIntersections(null, 1), "TC04: null ray must throw"), "ray", "TC04");
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> sphere.findGeoIntersections(null), "TC04: null ray must throw"), "ray", "TC04");
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> sphere.findIntersections(null), "TC04: null ray must throw"), "ray", "TC04");
 
         // ===== Boundary Values Tests =====
         // TC11: zero distance is rejected
-        assertMessage("TC11", "distance", assertThrows(IllegalArgumentException.class,
-                () -> sphere.findGeoIntersections(ray, 0), "TC11: zero max distance must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> sphere.findGeoIntersections(ray, 0), "TC11: zero max distance must throw"), "distance", "TC11");
 
         // TC12: negative infinity is rejected
-        assertMessage("TC12", "distance", assertThrows(IllegalArgumentException.class,
-                () -> sphere.findGeoIntersections(ray, Double.NEGATIVE_INFINITY), "TC12: -infinity must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> sphere.findGeoIntersections(ray, Double.NEGATIVE_INFINITY), "TC12: -infinity must throw"),
+                "distance", "TC12");
 
         // TC13: positive infinity is accepted and means no limit (2 points)
         assertEquals(2, sphere.findGeoIntersections(ray, Double.POSITIVE_INFINITY).size(),

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.List;
 
@@ -21,18 +22,6 @@ import primitives.Vector;
 class PlaneTest {
     /** The course's plane through (1,0,0), (0,1,0), (0,0,1): x + y + z = 1. */
     private final Plane plane = new Plane(new Point3D(1, 0, 0), new Point3D(0, 1, 0), new Point3D(0, 0, 1));
-
-    /**
-     * Asserts that an exception's message contains a word.
-     *
-     * @param message the case label
-     * @param word    the word the message must contain
-     * @param e       the exception
-     */
-    private static void assertMessage(String message, String word, IllegalArgumentException e) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                message + ": the message must contain \"" + word + "\" but is: " + e.getMessage());
-    }
 
     /**
      * Test method for {@link geometries.Plane#Plane(primitives.Point3D, primitives.Point3D, primitives.Point3D)}.
@@ -64,30 +53,33 @@ class PlaneTest {
 
         // ===== Boundary Values Tests =====
         // TC11: first and second points coincide
-        assertMessage("TC11", "coincide", assertThrows(IllegalArgumentException.class,
-                () -> new Plane(p1, new Point3D(1, 0, 0), p3), "TC11: coincident points must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Plane(p1, new Point3D(1, 0, 0), p3), "TC11: coincident points must throw"),
+                "coincide", "TC11");
 
         // TC12: second and third points coincide
-        assertMessage("TC12", "coincide", assertThrows(IllegalArgumentException.class,
-                () -> new Plane(p1, p2, new Point3D(0, 1, 0)), "TC12: coincident points must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Plane(p1, p2, new Point3D(0, 1, 0)), "TC12: coincident points must throw"),
+                "coincide", "TC12");
 
         // TC13: first and third points coincide
-        assertMessage("TC13", "coincide", assertThrows(IllegalArgumentException.class,
-                () -> new Plane(p1, p2, new Point3D(1, 0, 0)), "TC13: coincident points must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Plane(p1, p2, new Point3D(1, 0, 0)), "TC13: coincident points must throw"),
+                "coincide", "TC13");
 
         // TC14: all three points coincide
-        assertMessage("TC14", "coincide", assertThrows(IllegalArgumentException.class,
-                () -> new Plane(p1, p1, p1), "TC14: coincident points must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Plane(p1, p1, p1), "TC14: coincident points must throw"), "coincide", "TC14");
 
         // TC15: three distinct collinear points
-        assertMessage("TC15", "collinear", assertThrows(IllegalArgumentException.class,
+        assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Plane(new Point3D(1, 2, 3), new Point3D(2, 4, 6), new Point3D(3, 6, 9)),
-                "TC15: collinear points must throw"));
+                "TC15: collinear points must throw"), "collinear", "TC15");
 
         // TC16: collinear points with the middle one given last
-        assertMessage("TC16", "collinear", assertThrows(IllegalArgumentException.class,
+        assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Plane(new Point3D(0, 0, 0), new Point3D(4, 0, 0), new Point3D(1, 0, 0)),
-                "TC16: collinear points must throw"));
+                "TC16: collinear points must throw"), "collinear", "TC16");
     }
 
     /**

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.List;
 
@@ -45,18 +46,6 @@ class PolygonTest {
     }
 
     /**
-     * Asserts that an exception's message contains a word.
-     *
-     * @param message the case label
-     * @param word    the word the message must contain
-     * @param e       the exception
-     */
-    private static void assertMessage(String message, String word, IllegalArgumentException e) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                message + ": the message must contain \"" + word + "\" but is: " + e.getMessage());
-    }
-
-    /**
      * Test method for {@link geometries.Polygon#Polygon(primitives.Point3D...)}.
      */
     @Test
@@ -75,18 +64,19 @@ class PolygonTest {
         assertDoesNotThrow(() -> new Polygon(pentagon), "TC02: failed constructing a regular pentagon");
 
         // TC03: vertices not in one plane
-        assertMessage("TC03", "coplanar", assertThrows(IllegalArgumentException.class,
-                () -> new Polygon(A, B, C, new Point3D(-2, 1, 1)), "TC03: non-coplanar vertices must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B, C, new Point3D(-2, 1, 1)), "TC03: non-coplanar vertices must throw"),
+                "coplanar", "TC03");
 
         // TC04: a concave quadrangle (a dent at (1,1,0))
-        assertMessage("TC04", "convex", assertThrows(IllegalArgumentException.class,
+        assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Polygon(new Point3D(0, 0, 0), new Point3D(4, 0, 0), new Point3D(1, 1, 0), new Point3D(0, 4, 0)),
-                "TC04: a concave quadrangle must throw"));
+                "TC04: a concave quadrangle must throw"), "convex", "TC04");
 
         // TC05: a self-crossing bow-tie quadrangle
-        assertMessage("TC05", "convex", assertThrows(IllegalArgumentException.class,
+        assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Polygon(new Point3D(0, 0, 0), new Point3D(1, 1, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)),
-                "TC05: a bow-tie must throw"));
+                "TC05: a bow-tie must throw"), "convex", "TC05");
 
         // TC06: a pentagram (a star whose turns all go the same way)
         Point3D[] star = new Point3D[5];
@@ -94,42 +84,44 @@ class PolygonTest {
             double angle = Math.PI / 2 + k * 4 * Math.PI / 5;
             star[k] = new Point3D(Math.cos(angle), Math.sin(angle), 0);
         }
-        assertMessage("TC06", "convex", assertThrows(IllegalArgumentException.class,
-                () -> new Polygon(star), "TC06: a pentagram must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(star), "TC06: a pentagram must throw"), "convex", "TC06");
 
         // TC07: a concave quadrangle whose dent is the second vertex (the first turn goes the wrong way)
-        assertMessage("TC07", "convex", assertThrows(IllegalArgumentException.class,
+        assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Polygon(new Point3D(4, 0, 0), new Point3D(1, 1, 0), new Point3D(0, 4, 0), new Point3D(0, 0, 0)),
-                "TC07: a concave quadrangle must throw"));
+                "TC07: a concave quadrangle must throw"), "convex", "TC07");
 
         // TC08: a null vertex is rejected
         assertThrows(IllegalArgumentException.class, () -> new Polygon(A, B, null, D), "TC08: null vertex must throw");
 
         // ===== Boundary Values Tests =====
         // TC11: fewer than 3 vertices (2, none, a null array)
-        assertMessage("TC11", "3 vertices", assertThrows(IllegalArgumentException.class,
-                () -> new Polygon(A, B), "TC11: 2 vertices must throw"));
-        assertMessage("TC11", "3 vertices", assertThrows(IllegalArgumentException.class,
-                () -> new Polygon(), "TC11: no vertices must throw"));
-        assertMessage("TC11", "3 vertices", assertThrows(IllegalArgumentException.class,
-                () -> new Polygon((Point3D[]) null), "TC11: a null vertex array must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B), "TC11: 2 vertices must throw"), "3 vertices", "TC11");
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(), "TC11: no vertices must throw"), "3 vertices", "TC11");
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Polygon((Point3D[]) null), "TC11: a null vertex array must throw"), "3 vertices", "TC11");
 
         // TC12: the last vertex (0,0.5,0.5) lies on the edge from its neighbour C to its neighbour A
-        assertMessage("TC12", "edge", assertThrows(IllegalArgumentException.class,
-                () -> new Polygon(A, B, C, new Point3D(0, 0.5, 0.5)), "TC12: vertex on an edge must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B, C, new Point3D(0, 0.5, 0.5)), "TC12: vertex on an edge must throw"),
+                "edge", "TC12");
 
         // TC13: three consecutive collinear vertices in the middle of the list
-        assertMessage("TC13", "collinear", assertThrows(IllegalArgumentException.class,
+        assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Polygon(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(2, 0, 0), new Point3D(0, 2, 0)),
-                "TC13: vertex on an edge must throw"));
+                "TC13: vertex on an edge must throw"), "collinear", "TC13");
 
         // TC14: two consecutive vertices coincide
-        assertMessage("TC14", "coincide", assertThrows(IllegalArgumentException.class,
-                () -> new Polygon(A, B, C, C), "TC14: coincident vertices must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B, C, C), "TC14: coincident vertices must throw"), "coincide", "TC14");
 
         // TC15: the last vertex coincides with the first
-        assertMessage("TC15", "coincide", assertThrows(IllegalArgumentException.class,
-                () -> new Polygon(A, B, C, D, A), "TC15: closing vertex equal to the first must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Polygon(A, B, C, D, A), "TC15: closing vertex equal to the first must throw"),
+                "coincide", "TC15");
     }
 
     /**

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.List;
 import java.util.Random;
@@ -43,18 +44,6 @@ class TriangleTest {
     }
 
     /**
-     * Asserts that an exception's message contains a word.
-     *
-     * @param message the case label
-     * @param word    the word the message must contain
-     * @param e       the exception
-     */
-    private static void assertMessage(String message, String word, IllegalArgumentException e) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                message + ": the message must contain \"" + word + "\" but is: " + e.getMessage());
-    }
-
-    /**
      * Test method for {@link geometries.Triangle#Triangle(primitives.Point3D, primitives.Point3D, primitives.Point3D)}.
      */
     @Test
@@ -69,22 +58,24 @@ class TriangleTest {
 
         // ===== Boundary Values Tests =====
         // TC11: three distinct collinear vertices (the middle one on the edge of the others)
-        assertMessage("TC11", "collinear", assertThrows(IllegalArgumentException.class,
+        assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Triangle(new Point3D(0, 0, 0), new Point3D(1, 1, 1), new Point3D(2, 2, 2)),
-                "TC11: collinear vertices must throw"));
+                "TC11: collinear vertices must throw"), "collinear", "TC11");
 
         // TC12: collinear vertices with the middle one given last
-        assertMessage("TC12", "collinear", assertThrows(IllegalArgumentException.class,
+        assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Triangle(new Point3D(0, 0, 0), new Point3D(4, 0, 0), new Point3D(1, 0, 0)),
-                "TC12: collinear vertices must throw"));
+                "TC12: collinear vertices must throw"), "collinear", "TC12");
 
         // TC13: first and second vertices coincide
-        assertMessage("TC13", "coincide", assertThrows(IllegalArgumentException.class,
-                () -> new Triangle(P1, new Point3D(1, 0, 0), P3), "TC13: coincident vertices must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Triangle(P1, new Point3D(1, 0, 0), P3), "TC13: coincident vertices must throw"),
+                "coincide", "TC13");
 
         // TC14: first and third vertices coincide
-        assertMessage("TC14", "coincide", assertThrows(IllegalArgumentException.class,
-                () -> new Triangle(P1, P2, new Point3D(1, 0, 0)), "TC14: coincident vertices must throw"));
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> new Triangle(P1, P2, new Point3D(1, 0, 0)), "TC14: coincident vertices must throw"),
+                "coincide", "TC14");
     }
 
     /**

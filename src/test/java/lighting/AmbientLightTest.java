@@ -1,6 +1,8 @@
 package lighting;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertColor;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -10,22 +12,6 @@ import primitives.Color;
  * Unit tests for {@link lighting.AmbientLight}.
  */
 class AmbientLightTest {
-    /** Tolerance for comparing doubles. */
-    private static final double DELTA = 1e-10;
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
-
-    /** Asserts a colour's components within the tolerance. */
-    private static void assertColor(double r, double g, double b, Color c, String message) {
-        assertEquals(r, c.getR(), DELTA, message + " (red)");
-        assertEquals(g, c.getG(), DELTA, message + " (green)");
-        assertEquals(b, c.getB(), DELTA, message + " (blue)");
-    }
-
     /** Test method for {@link lighting.AmbientLight#AmbientLight(primitives.Color, double)}. */
     @Test
     void testConstructorIaKa() {

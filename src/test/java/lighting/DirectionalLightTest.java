@@ -1,6 +1,7 @@
 package lighting;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -18,12 +19,6 @@ class DirectionalLightTest {
     /** Points spread over space, to show that the answers do not depend on the point. */
     private static final Point3D[] POINTS = {
             Point3D.ZERO, new Point3D(1000, -5, 7), new Point3D(-3, 2, 1), new Point3D(1e-6, 0, -1e6) };
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
 
     /** Test method for {@link lighting.DirectionalLight#DirectionalLight(primitives.Color, primitives.Vector)}. */
     @Test

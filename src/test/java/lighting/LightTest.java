@@ -1,6 +1,7 @@
 package lighting;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -11,12 +12,6 @@ import primitives.Color;
  * {@link lighting.AmbientLight}.
  */
 class LightTest {
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
-
     /** Test method for {@link lighting.Light#Light(primitives.Color)} and {@link lighting.Light#getIntensity()}. */
     @Test
     void testConstructorAndGetIntensity() {

@@ -1,6 +1,8 @@
 package lighting;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertColor;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -18,19 +20,6 @@ class PointLightTest {
     private static final Point3D POSITION = new Point3D(1, 2, 3);
     /** The light's intensity in most tests. */
     private static final Color I = new Color(300, 150, 60);
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
-
-    /** Asserts a colour's components within the tolerance. */
-    private static void assertColor(double r, double g, double b, Color c, String message) {
-        assertEquals(r, c.getR(), DELTA, message + " (red)");
-        assertEquals(g, c.getG(), DELTA, message + " (green)");
-        assertEquals(b, c.getB(), DELTA, message + " (blue)");
-    }
 
     /** Test method for {@link lighting.PointLight#PointLight(primitives.Color, primitives.Point3D)}. */
     @Test

@@ -1,6 +1,8 @@
 package lighting;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertColor;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -22,19 +24,6 @@ class SpotLightTest {
     private static final Point3D ON_AXIS = new Point3D(0, 0, -10);
     /** A point 60 degrees off the axis at distance 2 (dir·l = 0.5). */
     private static final Point3D AT_60 = new Point3D(SQRT3, 0, -1);
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
-
-    /** Asserts a colour's components within the tolerance. */
-    private static void assertColor(double r, double g, double b, Color c, String message) {
-        assertEquals(r, c.getR(), DELTA, message + " (red)");
-        assertEquals(g, c.getG(), DELTA, message + " (green)");
-        assertEquals(b, c.getB(), DELTA, message + " (blue)");
-    }
 
     /** @return a fresh spot light at the origin toward -z, given as the non-unit (0, 0, -5) */
     private static SpotLight light() {

@@ -1,6 +1,8 @@
 package primitives;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertColor;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -8,28 +10,12 @@ import org.junit.jupiter.api.Test;
  * Unit tests for {@link primitives.Color}.
  */
 class ColorTest {
-    /** Tolerance for comparing doubles. */
-    private static final double DELTA = 1e-10;
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
-
-    /** Asserts a colour's exact components. */
-    private static void assertRgb(double r, double g, double b, Color c, String message) {
-        assertEquals(r, c.getR(), DELTA, message + " (red)");
-        assertEquals(g, c.getG(), DELTA, message + " (green)");
-        assertEquals(b, c.getB(), DELTA, message + " (blue)");
-    }
-
     /** Test method for {@link primitives.Color#Color(double, double, double)} and {@link primitives.Color#BLACK}. */
     @Test
     void testConstructorComponents() {
         // ===== Equivalence Partitions Tests =====
         // TC01: components are kept (10, 20.5, 300)
-        assertRgb(10, 20.5, 300, new Color(10, 20.5, 300), "TC01: wrong components");
+        assertColor(10, 20.5, 300, new Color(10, 20.5, 300), "TC01: wrong components");
         // TC02: a negative component is rejected, the message names it and says "negative"
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> new Color(-1, 0, 0), "TC02: negative red must be rejected");
@@ -54,10 +40,10 @@ class ColorTest {
 
         // ===== Boundary Values Tests =====
         // TC10: BLACK is (0,0,0)
-        assertRgb(0, 0, 0, Color.BLACK, "TC10: BLACK must be (0,0,0)");
+        assertColor(0, 0, 0, Color.BLACK, "TC10: BLACK must be (0,0,0)");
         assertEquals(new Color(0, 0, 0), Color.BLACK, "TC10: BLACK must equal (0,0,0)");
         // TC11: zero components are accepted (0,0,0)
-        assertRgb(0, 0, 0, new Color(0, 0, 0), "TC11: wrong components");
+        assertColor(0, 0, 0, new Color(0, 0, 0), "TC11: wrong components");
         // TC12: a tiny negative component is rejected (-1e-300)
         assertThrows(IllegalArgumentException.class, () -> new Color(0, 0, -1e-300),
                 "TC12: tiny negative blue must be rejected");
@@ -68,7 +54,7 @@ class ColorTest {
     void testConstructorAwt() {
         // ===== Equivalence Partitions Tests =====
         // TC01: AWT (10,20,30) gives (10,20,30)
-        assertRgb(10, 20, 30, new Color(new java.awt.Color(10, 20, 30)), "TC01: wrong components");
+        assertColor(10, 20, 30, new Color(new java.awt.Color(10, 20, 30)), "TC01: wrong components");
         // TC02: null is rejected with a message naming "null"
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> new Color((java.awt.Color) null), "TC02: null AWT colour must be rejected");
@@ -76,9 +62,9 @@ class ColorTest {
 
         // ===== Boundary Values Tests =====
         // TC10: AWT black gives (0,0,0)
-        assertRgb(0, 0, 0, new Color(java.awt.Color.BLACK), "TC10: wrong components");
+        assertColor(0, 0, 0, new Color(java.awt.Color.BLACK), "TC10: wrong components");
         // TC11: AWT white gives (255,255,255)
-        assertRgb(255, 255, 255, new Color(java.awt.Color.WHITE), "TC11: wrong components");
+        assertColor(255, 255, 255, new Color(java.awt.Color.WHITE), "TC11: wrong components");
         // TC12: round trip: getColor() of AWT (1,128,254) gives the same AWT colour
         java.awt.Color awt = new java.awt.Color(1, 128, 254);
         assertEquals(awt, new Color(awt).getColor(), "TC12: round trip through Color must keep the AWT colour");
@@ -92,16 +78,16 @@ class ColorTest {
         Color c3 = new Color(100, 0, 0.5);
         // ===== Equivalence Partitions Tests =====
         // TC01: one colour: (10,20,30) + (1,2,3) = (11,22,33)
-        assertRgb(11, 22, 33, c1.add(c2), "TC01: wrong sum");
+        assertColor(11, 22, 33, c1.add(c2), "TC01: wrong sum");
         // TC02: several colours: (10,20,30) + (1,2,3) + (100,0,0.5) = (111,22,33.5)
-        assertRgb(111, 22, 33.5, c1.add(c2, c3), "TC02: wrong sum of several colours");
+        assertColor(111, 22, 33.5, c1.add(c2, c3), "TC02: wrong sum of several colours");
         // TC03: sums above 255 are kept (not clamped): (200,200,200)+(100,100,100) = (300,300,300)
-        assertRgb(300, 300, 300, new Color(200, 200, 200).add(new Color(100, 100, 100)), "TC03: wrong sum");
+        assertColor(300, 300, 300, new Color(200, 200, 200).add(new Color(100, 100, 100)), "TC03: wrong sum");
         // TC04: the operands are unchanged
         c1.add(c2, c3);
-        assertRgb(10, 20, 30, c1, "TC04: add changed its colour");
-        assertRgb(1, 2, 3, c2, "TC04: add changed its argument");
-        assertRgb(100, 0, 0.5, c3, "TC04: add changed its argument");
+        assertColor(10, 20, 30, c1, "TC04: add changed its colour");
+        assertColor(1, 2, 3, c2, "TC04: add changed its argument");
+        assertColor(100, 0, 0.5, c3, "TC04: add changed its argument");
         // TC05: a null colour or null array is rejected with a message naming "null"
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> c1.add(c2, null), "TC05: null colour must be rejected");
@@ -112,11 +98,11 @@ class ColorTest {
 
         // ===== Boundary Values Tests =====
         // TC10: no argument: an equal colour (10,20,30)
-        assertRgb(10, 20, 30, c1.add(), "TC10: add() must give the same colour");
+        assertColor(10, 20, 30, c1.add(), "TC10: add() must give the same colour");
         // TC11: adding BLACK: the same colour (10,20,30)
-        assertRgb(10, 20, 30, c1.add(Color.BLACK), "TC11: adding BLACK must not change the colour");
+        assertColor(10, 20, 30, c1.add(Color.BLACK), "TC11: adding BLACK must not change the colour");
         // TC12: adding a colour to itself: (20,40,60)
-        assertRgb(20, 40, 60, c1.add(c1), "TC12: wrong sum c + c");
+        assertColor(20, 40, 60, c1.add(c1), "TC12: wrong sum c + c");
     }
 
     /** Test method for {@link primitives.Color#scale(double)}. */
@@ -125,12 +111,12 @@ class ColorTest {
         Color c = new Color(10, 20, 30);
         // ===== Equivalence Partitions Tests =====
         // TC01: factor 2: (20,40,60)
-        assertRgb(20, 40, 60, c.scale(2), "TC01: wrong scaled colour");
+        assertColor(20, 40, 60, c.scale(2), "TC01: wrong scaled colour");
         // TC02: factor 0.5: (5,10,15)
-        assertRgb(5, 10, 15, c.scale(0.5), "TC02: wrong scaled colour");
+        assertColor(5, 10, 15, c.scale(0.5), "TC02: wrong scaled colour");
         // TC03: operand unchanged
         c.scale(3);
-        assertRgb(10, 20, 30, c, "TC03: scale changed its colour");
+        assertColor(10, 20, 30, c, "TC03: scale changed its colour");
         // TC04: negative factor is rejected, the message names the factor and "negative"
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> c.scale(-2), "TC04: negative factor must be rejected");
@@ -145,7 +131,7 @@ class ColorTest {
         // TC10: factor 0: BLACK (0,0,0)
         assertEquals(Color.BLACK, c.scale(0), "TC10: scale(0) must give black");
         // TC11: factor 1: the same colour (10,20,30)
-        assertRgb(10, 20, 30, c.scale(1), "TC11: scale(1) must keep the colour");
+        assertColor(10, 20, 30, c.scale(1), "TC11: scale(1) must keep the colour");
         // TC12: a tiny negative factor is rejected (-1e-300)
         assertThrows(IllegalArgumentException.class, () -> c.scale(-1e-300),
                 "TC12: tiny negative factor must be rejected");
@@ -157,12 +143,12 @@ class ColorTest {
         Color c = new Color(10, 20, 30);
         // ===== Equivalence Partitions Tests =====
         // TC01: divisor 2: (5,10,15)
-        assertRgb(5, 10, 15, c.reduce(2), "TC01: wrong reduced colour");
+        assertColor(5, 10, 15, c.reduce(2), "TC01: wrong reduced colour");
         // TC02: divisor 0.5: (20,40,60)
-        assertRgb(20, 40, 60, c.reduce(0.5), "TC02: wrong reduced colour");
+        assertColor(20, 40, 60, c.reduce(0.5), "TC02: wrong reduced colour");
         // TC03: operand unchanged
         c.reduce(4);
-        assertRgb(10, 20, 30, c, "TC03: reduce changed its colour");
+        assertColor(10, 20, 30, c, "TC03: reduce changed its colour");
         // TC04: negative divisor is rejected, the message says "positive"
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> c.reduce(-2), "TC04: negative divisor must be rejected");
@@ -178,7 +164,7 @@ class ColorTest {
         assertMessage(e, "divisor", "TC10");
         assertMessage(e, "positive", "TC10");
         // TC11: divisor 1: the same colour (10,20,30)
-        assertRgb(10, 20, 30, c.reduce(1), "TC11: reduce(1) must keep the colour");
+        assertColor(10, 20, 30, c.reduce(1), "TC11: reduce(1) must keep the colour");
         // TC12: infinite divisor is rejected ("finite")
         e = assertThrows(IllegalArgumentException.class, () -> c.reduce(Double.POSITIVE_INFINITY),
                 "TC12: infinite divisor must be rejected");

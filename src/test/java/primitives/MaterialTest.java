@@ -1,6 +1,7 @@
 package primitives;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -8,12 +9,6 @@ import org.junit.jupiter.api.Test;
  * Unit tests for {@link primitives.Material}.
  */
 class MaterialTest {
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
 
     /** Test method for the defaults of {@link primitives.Material}. */
     @Test

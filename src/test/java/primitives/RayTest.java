@@ -1,6 +1,7 @@
 package primitives;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -16,12 +17,6 @@ import geometries.Sphere;
 class RayTest {
     /** Tolerance for comparing doubles. */
     private static final double DELTA = 1e-10;
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
 
     /** Test method for {@link primitives.Ray#Ray(primitives.Point3D, primitives.Vector)}. */
     @Test

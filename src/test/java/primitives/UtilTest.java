@@ -2,6 +2,7 @@ package primitives;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static primitives.Util.*;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -9,12 +10,6 @@ import org.junit.jupiter.api.Test;
  * Unit tests for {@link primitives.Util}.
  */
 class UtilTest {
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
 
     /** Test method for {@link primitives.Util#isZero(double)}. */
     @Test

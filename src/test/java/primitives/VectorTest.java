@@ -1,6 +1,7 @@
 package primitives;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import org.junit.jupiter.api.Test;
 
@@ -10,12 +11,6 @@ import org.junit.jupiter.api.Test;
 class VectorTest {
     /** Tolerance for comparing doubles. */
     private static final double DELTA = 1e-10;
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
 
     /** Asserts a vector's exact components, to prove that an operation left it untouched. */
     private static void assertComponents(double x, double y, double z, Vector v, String message) {

@@ -1,6 +1,7 @@
 package renderer;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -21,12 +22,6 @@ import primitives.Color;
 class ImageWriterTest {
     /** The folder test pictures go to (never the checked-in images/). */
     private static final Path TEST_FOLDER = Path.of("target", "test-images");
-
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(Exception e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
 
     /** Asserts an AWT colour's exact components. */
     private static void assertRgb(int r, int g, int b, java.awt.Color c, String message) {

@@ -1,8 +1,8 @@
 package renderer;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertColor;
 
 import org.junit.jupiter.api.Test;
 
@@ -24,16 +24,9 @@ import scene.Scene;
  * transparency, reflection and refraction.
  */
 class RayTracerBasicTest {
-    private static final double DELTA = 1e-9;
     private static final Vector DOWN = new Vector(0, 0, -1);
     /** A ray from above straight down onto the origin. */
     private static final Ray RAY_DOWN = new Ray(new Point3D(0, 0, 100), DOWN);
-
-    private static void assertColor(Color expected, Color actual, String message) {
-        assertEquals(expected.getR(), actual.getR(), DELTA, message + " (red)");
-        assertEquals(expected.getG(), actual.getG(), DELTA, message + " (green)");
-        assertEquals(expected.getB(), actual.getB(), DELTA, message + " (blue)");
-    }
 
     /** A floor plane z = 0 facing up, with the given material and emission. */
     private static Plane floor(Material material, Color emission) {

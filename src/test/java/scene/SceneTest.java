@@ -1,6 +1,7 @@
 package scene;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -22,12 +23,6 @@ import primitives.Vector;
  * Unit tests for {@link scene.Scene}.
  */
 class SceneTest {
-    /** Asserts that a thrown exception's message contains a given word. */
-    private static void assertMessage(IllegalArgumentException e, String word, String tc) {
-        assertTrue(e.getMessage() != null && e.getMessage().contains(word),
-                tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
-    }
-
     /** Test method for {@link scene.Scene#Scene(String)}. */
     @Test
     void testConstructor() {
