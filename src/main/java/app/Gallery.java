@@ -56,7 +56,8 @@ public final class Gallery {
                         new SpotLight(new Color(800, 400, 400), new Point3D(10, -10, -130), new Vector(-2, -2, -1))
                                 .setNarrowBeam(10).setKl(0.001).setKq(0.00004)),
                 shadowSphereTriangle(),
-                shadowTrianglesSphere(),
+                sphereOnTriangles(), sphereOnTriangles().withSoftShadows("softSphereOnTriangles"),
+                eightElements(), eightElements().withSoftShadows("softEightElements"),
                 twoSpheres(),
                 twoSpheresOnMirrors(),
                 trianglesTransparentSphere());
@@ -84,7 +85,8 @@ public final class Gallery {
         Render render = new Render()
                 .setImageWriter(new ImageWriter(picture.name(), picture.nX(), picture.nY(), folder))
                 .setCamera(picture.camera())
-                .setRayTracer(new RayTracerBasic(picture.scene()));
+                .setRayTracer(new RayTracerBasic(picture.scene()))
+                .setSoftShadows(picture.softShadows());
         render.renderImage();
         if (picture.gridInterval() > 0)
             render.printGrid(picture.gridInterval(), YELLOW);
@@ -109,7 +111,7 @@ public final class Gallery {
                 new Triangle(new Point3D(100, 0, -100), new Point3D(0, -100, -100), new Point3D(100, -100, -100)));
         Camera camera = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0))
                 .setVpDistance(100).setVpSize(500, 500);
-        return new Picture("baseRenderTwoColors", 1000, 1000, scene, camera, 100);
+        return new Picture("baseRenderTwoColors", 1000, 1000, scene, camera, 100, false);
     }
 
     private static Picture lights(String name, Scene scene, Camera camera, LightSource light) {
@@ -157,15 +159,46 @@ public final class Gallery {
         return new Picture("shadowSphereTriangle", 400, 400, scene, frontCamera(1000, 200));
     }
 
-    /** Two triangles with a sphere over them: the report's scene A, with a point-sized light. */
-    private static Picture shadowTrianglesSphere() {
-        Scene scene = new Scene("shadow: triangles and sphere").setAmbientLight(new AmbientLight(WHITE, 0.15));
+    /** The report's scene A: a sphere over two triangles, lit by a square spot light of edge 30. */
+    private static Picture sphereOnTriangles() {
+        Scene scene = new Scene("sphere on triangles").setAmbientLight(new AmbientLight(WHITE, 0.15));
         scene.geometries.add(reportFloor(new Material().setKs(0.8).setShininess(60)),
                 new Sphere(new Point3D(0, 0, -115), 30).setEmission(BLUE)
                         .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(30)));
-        scene.lights.add(new SpotLight(new Color(700, 400, 400), new Point3D(40, 40, 115), new Vector(-1, -1, -4))
-                .setKl(4E-4).setKq(2E-5));
-        return new Picture("shadowTrianglesSphere", 600, 600, scene, frontCamera(1000, 200));
+        scene.lights.add(reportSquare(new SpotLight(new Color(700, 400, 400), new Point3D(40, 40, 115),
+                new Vector(-1, -1, -4)).setKl(4E-4).setKq(2E-5), 30));
+        return new Picture("sphereOnTriangles", 600, 600, scene, frontCamera(1000, 200));
+    }
+
+    /** The report's scene B: spheres and triangles, transparent and not, a mirror and three square lights. */
+    private static Picture eightElements() {
+        Scene scene = new Scene("eight elements").setAmbientLight(new AmbientLight(WHITE, 0.15));
+        scene.geometries.add(reportFloor(new Material().setKd(0.5).setKs(0.5).setShininess(60)),
+                new Sphere(new Point3D(-60, -50, -50), 30).setEmission(new Color(java.awt.Color.RED))
+                        .setMaterial(new Material().setKd(0.3).setKs(0.3).setShininess(30).setKt(0.5)),
+                new Sphere(new Point3D(10, -20, -100), 25).setEmission(new Color(java.awt.Color.GREEN))
+                        .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(30).setKt(0.6)),
+                new Sphere(new Point3D(-95, -90, -100), 20).setEmission(new Color(java.awt.Color.PINK))
+                        .setMaterial(new Material().setKd(0.25).setKs(0.25).setShininess(20)),
+                new Triangle(new Point3D(-70, -40, 0), new Point3D(-40, -70, 0), new Point3D(-68, -68, -4))
+                        .setEmission(BLUE).setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(30).setKt(0.3)),
+                new Triangle(new Point3D(-30, 0, 0), new Point3D(0, -30, 0), new Point3D(-38, -38, -4))
+                        .setEmission(new Color(java.awt.Color.CYAN))
+                        .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(30)),
+                new Triangle(new Point3D(150, -150, -150), new Point3D(-150, 150, -150), new Point3D(80, 80, 300))
+                        .setEmission(new Color(20, 20, 20)).setMaterial(new Material().setKr(1)));
+        scene.lights.add(reportSquare(new SpotLight(new Color(700, 400, 400), new Point3D(60, 50, 0),
+                new Vector(0, 0.2, -1)).setKl(4E-5).setKq(2E-7), 50));
+        scene.lights.add(reportSquare(new PointLight(new Color(1000, 600, 0), new Point3D(-100, -100, 300))
+                .setKl(4E-4).setKq(6E-5), 30));
+        scene.lights.add(reportSquare(new SpotLight(new Color(1020, 400, 400), new Point3D(-75, -75, -15),
+                new Vector(-1, -1, -4)).setKl(1E-5).setKq(5E-5), 40));
+        return new Picture("eightElements", 600, 600, scene, frontCamera(1000, 250));
+    }
+
+    /** Gives a light the report's square: this edge, its sides along the camera's vRight and vUp. */
+    private static PointLight reportSquare(PointLight light, double edges) {
+        return light.setEdgesSize(edges).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0));
     }
 
     /** The report's floor: two triangles sharing a diagonal, the seam the report's pictures show. */

@@ -14,8 +14,9 @@ import static primitives.Util.requireNonNull;
  * @param scene        the scene
  * @param camera       the camera
  * @param gridInterval the distance in pixels between grid lines drawn over the picture, 0 for none
+ * @param softShadows  whether lights with an area cast soft shadows
  */
-public record Picture(String name, int nX, int nY, Scene scene, Camera camera, int gridInterval) {
+public record Picture(String name, int nX, int nY, Scene scene, Camera camera, int gridInterval, boolean softShadows) {
     /** Checks the parts. */
     public Picture {
         requireNonNull(name, "picture name");
@@ -37,6 +38,16 @@ public record Picture(String name, int nX, int nY, Scene scene, Camera camera, i
      * @param camera the camera
      */
     public Picture(String name, int nX, int nY, Scene scene, Camera camera) {
-        this(name, nX, nY, scene, camera, 0);
+        this(name, nX, nY, scene, camera, 0, false);
+    }
+
+    /**
+     * The same picture with soft shadows, under another name.
+     *
+     * @param softName the soft picture's file name, without extension
+     * @return the soft-shadow picture
+     */
+    public Picture withSoftShadows(String softName) {
+        return new Picture(softName, nX, nY, scene, camera, gridInterval, true);
     }
 }

@@ -4,19 +4,25 @@ import primitives.Color;
 import primitives.Point3D;
 import primitives.Vector;
 
+import static primitives.Util.isZero;
 import static primitives.Util.requireNonNegative;
 import static primitives.Util.requireNonNull;
 
 /**
  * A light at a point that shines to all sides, attenuated with distance d by
- * {@code 1 / (kC + kL·d + kQ·d²)}.
+ * {@code 1 / (kC + kL·d + kQ·d²)}. For soft shadows it may be given an area: a square centred at its
+ * position, of edge {@link #setEdgesSize(double)}, its sides along {@link #setUV(Vector, Vector)}
+ * (by default the square faces the lit point).
  */
-public class PointLight extends Light implements LightSource {
+public class PointLight extends Light implements AreaLightSource {
     /** The light's position. */
     protected final Point3D position;
     private double kC = 1;
     private double kL = 0;
     private double kQ = 0;
+    private double edges = 0;
+    private Vector u;
+    private Vector v;
 
     /**
      * Creates a point light with no attenuation (kC 1, kL 0, kQ 0).
@@ -62,6 +68,35 @@ public class PointLight extends Light implements LightSource {
         return this;
     }
 
+    /**
+     * Gives the light an area for soft shadows: a square of this edge centred at its position.
+     *
+     * @param edges the length of the square's edge, 0 or more (0, the default, is a true point light)
+     * @return this light
+     */
+    public PointLight setEdgesSize(double edges) {
+        this.edges = requireNonNegative(edges, "light edge size");
+        return this;
+    }
+
+    /**
+     * Places the light's square in space: its sides run along U and V.
+     *
+     * @param u the direction of one side (any length)
+     * @param v the direction of the other side (any length), orthogonal to U
+     * @return this light
+     * @throws IllegalArgumentException when U and V are not orthogonal
+     */
+    public PointLight setUV(Vector u, Vector v) {
+        Vector unitU = requireNonNull(u, "light U").normalized();
+        Vector unitV = requireNonNull(v, "light V").normalized();
+        if (!isZero(unitU.dotProduct(unitV)))
+            throw new IllegalArgumentException("light U " + u + " and V " + v + " are not orthogonal");
+        this.u = unitU;
+        this.v = unitV;
+        return this;
+    }
+
     /** @return the light's position */
     public Point3D getPosition() {
         return position;
@@ -102,5 +137,43 @@ public class PointLight extends Light implements LightSource {
     @Override
     public double getDistance(Point3D p) {
         return requireNonNull(p, "lit point").distance(position);
+    }
+
+    @Override
+    public double getEdges() {
+        return edges;
+    }
+
+    /** @return the light's position, the centre of its square */
+    @Override
+    public Point3D getCenter() {
+        return position;
+    }
+
+    @Override
+    public Vector getU() {
+        return u;
+    }
+
+    @Override
+    public Vector getV() {
+        return v;
+    }
+
+    /** When U was not set, the square faces the lit point: U is then orthogonal to the light's direction there. */
+    @Override
+    public Vector getU(Point3D p) {
+        Vector setU = getU();
+        return setU != null ? setU : getL(p).orthogonal();
+    }
+
+    /** When V was not set, the square faces the lit point: V is then l × U. */
+    @Override
+    public Vector getV(Point3D p) {
+        Vector setV = getV();
+        if (setV != null)
+            return setV;
+        Vector l = getL(p);
+        return l.crossProduct(l.orthogonal()).normalize();
     }
 }

@@ -9,10 +9,13 @@ import static primitives.Util.requirePositive;
 
 /**
  * A point light that shines in a direction: its intensity is multiplied by
- * {@code max(0, dir·l)} raised to the narrow-beam power (1 by default).
+ * {@code max(0, dir·l)} raised to the narrow-beam power (1 by default). Unless U and V are set, its
+ * square faces along its direction.
  */
 public class SpotLight extends PointLight {
     private final Vector direction;
+    private final Vector squareU;
+    private final Vector squareV;
     private double narrowBeam = 1;
 
     /**
@@ -25,6 +28,8 @@ public class SpotLight extends PointLight {
     public SpotLight(Color intensity, Point3D position, Vector direction) {
         super(intensity, position);
         this.direction = requireNonNull(direction, "spot light direction").normalized();
+        this.squareU = this.direction.orthogonal();
+        this.squareV = this.direction.crossProduct(squareU).normalize();
     }
 
     /**
@@ -54,6 +59,32 @@ public class SpotLight extends PointLight {
     public SpotLight setKq(double kQ) {
         super.setKq(kQ);
         return this;
+    }
+
+    @Override
+    public SpotLight setEdgesSize(double edges) {
+        super.setEdgesSize(edges);
+        return this;
+    }
+
+    @Override
+    public SpotLight setUV(Vector u, Vector v) {
+        super.setUV(u, v);
+        return this;
+    }
+
+    /** @return the set U, or when it was not set a unit vector orthogonal to the beam's direction */
+    @Override
+    public Vector getU() {
+        Vector u = super.getU();
+        return u != null ? u : squareU;
+    }
+
+    /** @return the set V, or when it was not set direction × U */
+    @Override
+    public Vector getV() {
+        Vector v = super.getV();
+        return v != null ? v : squareV;
     }
 
     /** @return the unit direction of the beam's axis */

@@ -125,6 +125,23 @@ public class Vector {
         return new Vector(cx, cy, cz);
     }
 
+    /**
+     * A unit vector orthogonal to this one: this vector crossed with the coordinate axis it leans
+     * on least, so the same vector always gives the same answer.
+     *
+     * @return a new unit vector u with u · this = 0
+     */
+    public Vector orthogonal() {
+        double ax = Math.abs(x);
+        double ay = Math.abs(y);
+        double az = Math.abs(z);
+        if (ax <= ay && ax <= az) // × (1,0,0)
+            return new Vector(0, z, -y).normalize();
+        if (ay <= az) // × (0,1,0)
+            return new Vector(-z, 0, x).normalize();
+        return new Vector(y, -x, 0).normalize(); // × (0,0,1)
+    }
+
     /** @return the squared length */
     public double lengthSquared() {
         return x * x + y * y + z * z;

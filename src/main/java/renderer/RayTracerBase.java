@@ -1,5 +1,9 @@
 package renderer;
 
+import java.util.Queue;
+import java.util.SplittableRandom;
+import java.util.concurrent.ConcurrentLinkedQueue;
+
 import primitives.Color;
 import primitives.Ray;
 import scene.Scene;
@@ -7,11 +11,25 @@ import scene.Scene;
 import static primitives.Util.requireNonNull;
 
 /**
- * A ray tracer: finds the colour a ray sees in a scene.
+ * A ray tracer: finds the colour a ray sees in a scene. It also holds the soft-shadow settings and
+ * the random streams: every pixel gets its own stream, seeded from the pixel's position and the
+ * tracer's seed, so a picture is the same bit for bit whatever the number of threads.
  */
 public abstract class RayTracerBase {
+    /** The default square root of the number of shadow rays per light: 9 × 9 = 81 rays. */
+    public static final int DEFAULT_SQRT_BEAM_NUM = 9;
+    /** The default seed of the random streams. */
+    public static final long DEFAULT_SEED = 20_210_621L;
+
     /** The scene traced. */
     protected final Scene scene;
+    private int sqrtBeamNum = DEFAULT_SQRT_BEAM_NUM;
+    private JitteredGrid beamGrid = new JitteredGrid(DEFAULT_SQRT_BEAM_NUM);
+    private boolean softShadows;
+    private boolean adaptiveSoftShadows;
+    private long seed = DEFAULT_SEED;
+    private final Queue<ThreadState> threadStates = new ConcurrentLinkedQueue<>();
+    private final ThreadLocal<ThreadState> threadState = ThreadLocal.withInitial(this::newThreadState);
 
     /**
      * Creates a ray tracer for a scene.
@@ -29,4 +47,128 @@ public abstract class RayTracerBase {
      * @return the colour it sees (the background when it hits nothing)
      */
     public abstract Color traceRay(Ray ray);
+
+    /**
+     * Sets the number of shadow rays per light for soft shadows: sqrtBeamNum² rays to the light's
+     * square, plus one to its centre.
+     *
+     * @param sqrtBeamNum the number of cells along each side of the light's square, 1 or more
+     * @return this ray tracer
+     * @throws IllegalArgumentException when sqrtBeamNum is less than 1
+     */
+    public RayTracerBase setSqrtBeamNum(int sqrtBeamNum) {
+        if (sqrtBeamNum < 1)
+            throw new IllegalArgumentException("sqrtBeamNum must be 1 or more, got " + sqrtBeamNum);
+        this.beamGrid = new JitteredGrid(sqrtBeamNum);
+        this.sqrtBeamNum = sqrtBeamNum;
+        return this;
+    }
+
+    /**
+     * Turns soft shadows on or off (off by default; when off, the size of lights is ignored).
+     *
+     * @param softShadows true for soft shadows from lights with an area
+     * @return this ray tracer
+     */
+    public RayTracerBase setSoftShadows(boolean softShadows) {
+        this.softShadows = softShadows;
+        return this;
+    }
+
+    /**
+     * Turns adaptive soft shadows on or off (off by default): the outline of the light's square is
+     * sampled first, and when every ray agrees (all reach the light, or none does) the rest of the
+     * square is skipped.
+     *
+     * @param adaptiveSoftShadows true for adaptive sampling
+     * @return this ray tracer
+     */
+    public RayTracerBase setAdaptiveSoftShadows(boolean adaptiveSoftShadows) {
+        this.adaptiveSoftShadows = adaptiveSoftShadows;
+        return this;
+    }
+
+    /**
+     * Sets the seed of the random streams: the same seed gives the same picture.
+     *
+     * @param seed the seed
+     * @return this ray tracer
+     */
+    public RayTracerBase setSeed(long seed) {
+        this.seed = seed;
+        return this;
+    }
+
+    /** @return the square root of the number of shadow rays per light */
+    public int getSqrtBeamNum() {
+        return sqrtBeamNum;
+    }
+
+    /** @return the grid the shadow rays' points on a light's square come from */
+    public JitteredGrid getBeamGrid() {
+        return beamGrid;
+    }
+
+    /** @return whether soft shadows are on */
+    public boolean isSoftShadows() {
+        return softShadows;
+    }
+
+    /** @return whether adaptive soft shadows are on */
+    public boolean isAdaptiveSoftShadows() {
+        return adaptiveSoftShadows;
+    }
+
+    /** @return the seed of the random streams */
+    public long getSeed() {
+        return seed;
+    }
+
+    /** @return the number of rays traced from the camera by renders of this ray tracer so far */
+    public long getPrimaryRaysCount() {
+        long count = 0;
+        for (ThreadState state : threadStates)
+            count += state.primaryRays;
+        return count;
+    }
+
+    /** @return the number of shadow rays traced by this ray tracer so far */
+    public long getShadowRaysCount() {
+        long count = 0;
+        for (ThreadState state : threadStates)
+            count += state.shadowRays;
+        return count;
+    }
+
+    /**
+     * Starts a pixel on the calling thread: its random stream is reseeded from the seed and the
+     * pixel's position.
+     *
+     * @param j the pixel's column
+     * @param i the pixel's row
+     * @return the thread's state, its stream now the pixel's
+     */
+    ThreadState startPixel(int j, int i) {
+        ThreadState state = threadState.get();
+        state.random = new SplittableRandom(pixelSeed(j, i));
+        return state;
+    }
+
+    /** @return the calling thread's state */
+    ThreadState threadState() {
+        return threadState.get();
+    }
+
+    /** Mixes the seed with a pixel's position (multipliers of the SplitMix64 finaliser). */
+    private long pixelSeed(int j, int i) {
+        long h = (seed ^ i) * 0xBF58476D1CE4E5B9L;
+        h = (h ^ (h >>> 31) ^ j) * 0x94D049BB133111EBL;
+        return h ^ (h >>> 29);
+    }
+
+    private ThreadState newThreadState() {
+        ThreadState state = new ThreadState(new SplittableRandom(seed));
+        threadStates.add(state);
+        return state;
+    }
 }

@@ -3,6 +3,7 @@ package renderer;
 import java.util.List;
 
 import geometries.Intersectable.GeoPoint;
+import lighting.AreaLightSource;
 import lighting.LightSource;
 import primitives.Color;
 import primitives.Material;
@@ -120,7 +121,8 @@ public class RayTracerBasic extends RayTracerBase {
 
     /**
      * How much of a light reaches a point: 1 when nothing is in the way, 0 when an opaque body is,
-     * and the product of the {@code kT} of the transparent bodies in between otherwise.
+     * and the product of the {@code kT} of the transparent bodies in between otherwise. With soft
+     * shadows on and a light with an area, the average over rays to the light's square.
      *
      * @param light    the light
      * @param l        the unit direction from the light to the point
@@ -128,9 +130,89 @@ public class RayTracerBasic extends RayTracerBase {
      * @param geoPoint the lit point
      * @return the transparency factor in [0, 1]
      */
-    private double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint) {
-        Ray lightRay = new Ray(geoPoint.point, l.scale(-1), n);
-        return visibility(light.getDistance(geoPoint.point), lightRay, geoPoint);
+    double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint) {
+        Vector lightDirection = l.scale(-1); // from the point to the light
+        if (isSoftShadows() && light instanceof AreaLightSource areaLight && areaLight.getEdges() > 0)
+            return calcSoftShadows(areaLight, lightDirection, n, geoPoint);
+        ++threadState().shadowRays;
+        return visibility(light.getDistance(geoPoint.point), new Ray(geoPoint.point, lightDirection, n), geoPoint);
+    }
+
+    /**
+     * The soft-shadow factor of a light with an area: one ray to the centre of the light's square and
+     * one to a jittered point in each cell of its {@code sqrtBeamNum × sqrtBeamNum} grid, averaged.
+     * With adaptive sampling, the grid's outline is traced first and the inner cells only when its
+     * rays and the centre's disagree.
+     *
+     * @param light          the light
+     * @param lightDirection the unit direction from the point to the light's centre
+     * @param n              the surface normal at the point
+     * @param geoPoint       the lit point
+     * @return the average transparency of the rays, in [0, 1]
+     */
+    double calcSoftShadows(AreaLightSource light, Vector lightDirection, Vector n, GeoPoint geoPoint) {
+        ThreadState state = threadState();
+        Point3D point = geoPoint.point;
+        double ktr = visibility(light.getDistance(point), new Ray(point, lightDirection, n), geoPoint);
+        JitteredGrid grid = getBeamGrid();
+        double[] samples = state.points(grid);
+        grid.sample(state.random, samples);
+        LightSquare square = new LightSquare(light, point);
+        int outline = grid.getOutlineCount();
+        ktr += square.visibility(samples, 0, outline, n, geoPoint);
+        int rays = 1 + outline;
+        boolean agree = ktr == 0 || ktr == rays;
+        if (!(isAdaptiveSoftShadows() && agree)) {
+            ktr += square.visibility(samples, outline, grid.getSamplesCount(), n, geoPoint);
+            rays = 1 + grid.getSamplesCount();
+        }
+        state.shadowRays += rays;
+        return ktr / rays;
+    }
+
+    /** A light's square as seen from a lit point: its centre, its sides U and V, and its edge. */
+    private final class LightSquare {
+        private final double cx;
+        private final double cy;
+        private final double cz;
+        private final Vector u;
+        private final Vector v;
+        private final double edges;
+
+        LightSquare(AreaLightSource light, Point3D p) {
+            Point3D center = light.getCenter();
+            this.cx = center.getX();
+            this.cy = center.getY();
+            this.cz = center.getZ();
+            this.u = light.getU(p);
+            this.v = light.getV(p);
+            this.edges = light.getEdges();
+        }
+
+        /**
+         * The summed transparency of rays to some of the sample points.
+         *
+         * @param samples  sample points in the unit square, as a {@link JitteredGrid} draws them
+         * @param from     the first sample point
+         * @param to       one past the last sample point
+         * @param n        the surface normal at the lit point
+         * @param geoPoint the lit point
+         * @return the sum of the rays' transparencies
+         */
+        double visibility(double[] samples, int from, int to, Vector n, GeoPoint geoPoint) {
+            Point3D point = geoPoint.point;
+            double ktr = 0;
+            for (int s = from; s < to; ++s) {
+                double du = (0.5 - samples[2 * s]) * edges;
+                double dv = (0.5 - samples[2 * s + 1]) * edges;
+                Point3D sample = new Point3D(cx + u.getX() * du + v.getX() * dv,
+                        cy + u.getY() * du + v.getY() * dv,
+                        cz + u.getZ() * du + v.getZ() * dv);
+                ktr += RayTracerBasic.this.visibility(point.distance(sample),
+                        new Ray(point, sample.subtract(point), n), geoPoint);
+            }
+            return ktr;
+        }
     }
 
     /**
@@ -142,7 +224,7 @@ public class RayTracerBasic extends RayTracerBase {
      * @param geoPoint      the lit point
      * @return the transparency in [0, 1]
      */
-    private double visibility(double lightDistance, Ray lightRay, GeoPoint geoPoint) {
+    double visibility(double lightDistance, Ray lightRay, GeoPoint geoPoint) {
         // the head is DELTA off the surface: no blocker nearer the point than the light lies farther along
         List<GeoPoint> intersections = scene.geometries.findGeoIntersections(lightRay, lightDistance + Ray.DELTA);
         if (intersections == null)

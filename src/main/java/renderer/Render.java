@@ -24,6 +24,7 @@ public class Render {
     private RayTracerBase rayTracer;
     private int threadsCount = Runtime.getRuntime().availableProcessors();
     private boolean debugPrint;
+    private JitteredGrid pixelGrid;
 
     /**
      * Sets the image to render into.
@@ -64,6 +65,79 @@ public class Render {
     }
 
     /**
+     * Turns soft shadows on or off in the ray tracer.
+     *
+     * @param softShadows true for soft shadows from lights with an area
+     * @return this render
+     * @throws MissingResourceException when the ray tracer is not set yet
+     * @see RayTracerBase#setSoftShadows(boolean)
+     */
+    public Render setSoftShadows(boolean softShadows) {
+        requireRayTracer().setSoftShadows(softShadows);
+        return this;
+    }
+
+    /**
+     * Sets the number of shadow rays per light in the ray tracer.
+     *
+     * @param sqrtBeamNum the number of cells along each side of a light's square, 1 or more
+     * @return this render
+     * @throws MissingResourceException when the ray tracer is not set yet
+     * @see RayTracerBase#setSqrtBeamNum(int)
+     */
+    public Render setSqrtBeamNum(int sqrtBeamNum) {
+        requireRayTracer().setSqrtBeamNum(sqrtBeamNum);
+        return this;
+    }
+
+    /**
+     * Turns adaptive soft shadows on or off in the ray tracer.
+     *
+     * @param adaptiveSoftShadows true for adaptive sampling of lights' squares
+     * @return this render
+     * @throws MissingResourceException when the ray tracer is not set yet
+     * @see RayTracerBase#setAdaptiveSoftShadows(boolean)
+     */
+    public Render setAdaptiveSoftShadows(boolean adaptiveSoftShadows) {
+        requireRayTracer().setAdaptiveSoftShadows(adaptiveSoftShadows);
+        return this;
+    }
+
+    /**
+     * Sets the seed of the ray tracer's random streams.
+     *
+     * @param seed the seed
+     * @return this render
+     * @throws MissingResourceException when the ray tracer is not set yet
+     * @see RayTracerBase#setSeed(long)
+     */
+    public Render setSeed(long seed) {
+        requireRayTracer().setSeed(seed);
+        return this;
+    }
+
+    /**
+     * Sets anti-aliasing: each pixel's colour is the average of k × k rays through jittered points
+     * of the pixel, one in each cell of a k × k grid.
+     *
+     * @param sqrtSamples k, 1 or more; 1 (the default) is one ray through the pixel's centre
+     * @return this render
+     * @throws IllegalArgumentException when k is less than 1
+     */
+    public Render setAntiAliasing(int sqrtSamples) {
+        if (sqrtSamples < 1)
+            throw new IllegalArgumentException("anti-aliasing needs 1 or more rays along each side of a pixel, got "
+                    + sqrtSamples);
+        this.pixelGrid = sqrtSamples == 1 ? null : new JitteredGrid(sqrtSamples);
+        return this;
+    }
+
+    /** @return k, the square root of the number of rays per pixel */
+    public int getAntiAliasing() {
+        return pixelGrid == null ? 1 : pixelGrid.getSqrtSamples();
+    }
+
+    /**
      * Sets the number of rendering threads.
      *
      * @param threads the number of threads, 1 or more; 0 for one per core (the default)
@@ -95,8 +169,7 @@ public class Render {
         requireImageWriter();
         if (camera == null)
             throw new MissingResourceException("Render: the camera is not set", Render.class.getName(), "camera");
-        if (rayTracer == null)
-            throw new MissingResourceException("Render: the ray tracer is not set", Render.class.getName(), "rayTracer");
+        requireRayTracer();
         new TileRenderer().run();
     }
 
@@ -128,6 +201,12 @@ public class Render {
     public void writeToImage() {
         requireImageWriter();
         imageWriter.writeToImage();
+    }
+
+    private RayTracerBase requireRayTracer() {
+        if (rayTracer == null)
+            throw new MissingResourceException("Render: the ray tracer is not set", Render.class.getName(), "rayTracer");
+        return rayTracer;
     }
 
     private void requireImageWriter() {
@@ -188,9 +267,27 @@ public class Render {
             int y0 = (tile / tilesX) * TILE;
             int x1 = Math.min(x0 + TILE, nX);
             int y1 = Math.min(y0 + TILE, nY);
+            double[] points = pixelGrid == null ? null : new double[2 * pixelGrid.getSamplesCount()];
             for (int i = y0; i < y1; ++i)
                 for (int j = x0; j < x1; ++j)
-                    imageWriter.writePixel(j, i, rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i)));
+                    imageWriter.writePixel(j, i, renderPixel(j, i, points));
+        }
+
+        /** The colour of a pixel: one ray through its centre, or the average of its jittered rays. */
+        private Color renderPixel(int j, int i, double[] points) {
+            ThreadState state = rayTracer.startPixel(j, i);
+            if (pixelGrid == null) {
+                ++state.primaryRays;
+                return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i));
+            }
+            pixelGrid.sample(state.random, points);
+            int count = pixelGrid.getSamplesCount();
+            Color color = Color.BLACK;
+            for (int s = 0; s < count; ++s)
+                color = color.add(rayTracer.traceRay(
+                        camera.constructRayThroughPixel(nX, nY, j, i, points[2 * s], points[2 * s + 1])));
+            state.primaryRays += count;
+            return color.reduce(count);
         }
 
         private void printProgress() {

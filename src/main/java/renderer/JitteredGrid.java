@@ -1,0 +1,96 @@
+package renderer;
+
+import java.util.random.RandomGenerator;
+
+import static primitives.Util.requireNonNull;
+
+/**
+ * Stratified jittered sampling of the unit square: the square is divided into k × k equal cells and
+ * one point is drawn uniformly at random in each. This is the one place sample positions come from:
+ * soft shadows place their shadow rays on a light's square with it, anti-aliasing places its rays
+ * in a pixel.
+ * <p>
+ * Cells are visited outline first (the cells on the grid's border, going round it), then the inner
+ * cells row by row, so that adaptive sampling can look at the outline before deciding whether to
+ * sample the rest.
+ */
+public final class JitteredGrid {
+    private final int sqrtSamples;
+    private final int outlineCount;
+    /** The column and row of every cell, in visiting order: cells[2c], cells[2c + 1]. */
+    private final int[] cells;
+
+    /**
+     * Creates a grid of k × k cells.
+     *
+     * @param sqrtSamples k, the number of cells along each side, 1 or more
+     * @throws IllegalArgumentException when k is less than 1
+     */
+    public JitteredGrid(int sqrtSamples) {
+        if (sqrtSamples < 1)
+            throw new IllegalArgumentException("the square root of the number of samples must be 1 or more, got "
+                    + sqrtSamples);
+        this.sqrtSamples = sqrtSamples;
+        this.outlineCount = sqrtSamples == 1 ? 1 : 4 * (sqrtSamples - 1);
+        this.cells = new int[2 * sqrtSamples * sqrtSamples];
+        int c = visitOutline(0);
+        for (int row = 1; row < sqrtSamples - 1; ++row)
+            for (int column = 1; column < sqrtSamples - 1; ++column)
+                c = visit(c, column, row);
+    }
+
+    /** Lists the border cells going round the grid: top row, right column, bottom row, left column. */
+    private int visitOutline(int c) {
+        int last = sqrtSamples - 1;
+        if (last == 0)
+            return visit(c, 0, 0);
+        for (int column = 0; column < last; ++column)
+            c = visit(c, column, 0);
+        for (int row = 0; row < last; ++row)
+            c = visit(c, last, row);
+        for (int column = last; column > 0; --column)
+            c = visit(c, column, last);
+        for (int row = last; row > 0; --row)
+            c = visit(c, 0, row);
+        return c;
+    }
+
+    private int visit(int c, int column, int row) {
+        cells[2 * c] = column;
+        cells[2 * c + 1] = row;
+        return c + 1;
+    }
+
+    /** @return k, the number of cells along each side */
+    public int getSqrtSamples() {
+        return sqrtSamples;
+    }
+
+    /** @return k², the number of cells and so of sample points */
+    public int getSamplesCount() {
+        return sqrtSamples * sqrtSamples;
+    }
+
+    /** @return the number of cells on the grid's border, which come first: 4(k − 1), or 1 when k is 1 */
+    public int getOutlineCount() {
+        return outlineCount;
+    }
+
+    /**
+     * Draws one point in every cell, in visiting order (outline first). Point c is
+     * {@code (points[2c], points[2c + 1])}, both coordinates in [0, 1).
+     *
+     * @param random the random stream the jitter comes from (2 k² numbers are drawn from it)
+     * @param points the array filled with the points' coordinates, of length 2 k² or more
+     * @throws IllegalArgumentException when the random stream or the array is null, or the array is too short
+     */
+    public void sample(RandomGenerator random, double[] points) {
+        requireNonNull(random, "random stream");
+        if (requireNonNull(points, "sample points array").length < cells.length)
+            throw new IllegalArgumentException("sample points array holds " + points.length
+                    + " coordinates, the grid needs " + cells.length);
+        double cellSize = 1.0 / sqrtSamples;
+        for (int i = 0; i < cells.length; ++i)
+            points[i] = (cells[i] + random.nextDouble()) * cellSize;
+    }
+}

@@ -1,0 +1,39 @@
+package renderer;
+
+import java.util.SplittableRandom;
+
+/**
+ * What one rendering thread keeps for itself in a ray tracer, so that the per-pixel path takes no
+ * lock: the current pixel's random stream, room for sample points, and the thread's ray counts.
+ */
+final class ThreadState {
+    /** The random stream of the pixel being rendered. */
+    SplittableRandom random;
+    /** The rays traced from the camera by this thread. */
+    long primaryRays;
+    /** The shadow rays traced by this thread. */
+    long shadowRays;
+    private double[] points = new double[0];
+
+    /**
+     * Creates the state of a thread.
+     *
+     * @param random the stream for rays traced before any pixel is started
+     */
+    ThreadState(SplittableRandom random) {
+        this.random = random;
+    }
+
+    /**
+     * Room for a grid's sample points, reused from call to call.
+     *
+     * @param grid the grid
+     * @return an array of at least 2 k² doubles
+     */
+    double[] points(JitteredGrid grid) {
+        int length = 2 * grid.getSamplesCount();
+        if (points.length < length)
+            points = new double[length];
+        return points;
+    }
+}
