@@ -127,7 +127,8 @@ public class Vector {
 
     /**
      * A unit vector orthogonal to this one: this vector crossed with the coordinate axis it leans
-     * on least, so the same vector always gives the same answer.
+     * on least, so the same vector always gives the same answer. The two components used are first
+     * divided by the larger of them, so a very long vector cannot overflow the length.
      *
      * @return a new unit vector u with u · this = 0
      */
@@ -136,10 +137,15 @@ public class Vector {
         double ay = Math.abs(y);
         double az = Math.abs(z);
         if (ax <= ay && ax <= az) // × (1,0,0)
-            return new Vector(0, z, -y).normalize();
+            return unitOf(0, z, -y, Math.max(ay, az));
         if (ay <= az) // × (0,1,0)
-            return new Vector(-z, 0, x).normalize();
-        return new Vector(y, -x, 0).normalize(); // × (0,0,1)
+            return unitOf(-z, 0, x, Math.max(ax, az));
+        return unitOf(y, -x, 0, Math.max(ax, ay)); // × (0,0,1)
+    }
+
+    /** The unit vector along (x, y, z), its components first divided by their largest magnitude m. */
+    private static Vector unitOf(double x, double y, double z, double m) {
+        return new Vector(x / m, y / m, z / m).normalize();
     }
 
     /** @return the squared length */

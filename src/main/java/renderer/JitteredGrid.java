@@ -78,7 +78,8 @@ public final class JitteredGrid {
 
     /**
      * Draws one point in every cell, in visiting order (outline first). Point c is
-     * {@code (points[2c], points[2c + 1])}, both coordinates in [0, 1).
+     * {@code (points[2c], points[2c + 1])}, both coordinates in [0, 1) and the point inside its cell
+     * (on each axis {@code n / k <= x < (n + 1) / k} for the cell's index n, even for a draw just below 1).
      *
      * @param random the random stream the jitter comes from (2 k² numbers are drawn from it)
      * @param points the array filled with the points' coordinates, of length 2 k² or more
@@ -89,8 +90,12 @@ public final class JitteredGrid {
         if (requireNonNull(points, "sample points array").length < cells.length)
             throw new IllegalArgumentException("sample points array holds " + points.length
                     + " coordinates, the grid needs " + cells.length);
-        double cellSize = 1.0 / sqrtSamples;
-        for (int i = 0; i < cells.length; ++i)
-            points[i] = (cells[i] + random.nextDouble()) * cellSize;
+        for (int i = 0; i < cells.length; ++i) {
+            int cell = cells[i];
+            double point = (cell + random.nextDouble()) / sqrtSamples;
+            // rounding may carry a draw just below 1 onto the cell's upper edge (1 itself for the last cell)
+            double upper = (double) (cell + 1) / sqrtSamples;
+            points[i] = point < upper ? point : Math.nextDown(upper);
+        }
     }
 }

@@ -42,6 +42,23 @@ class GalleryTest {
         return max;
     }
 
+    /** The picture of the gallery with this name. */
+    private static Picture picture(String name) {
+        return Gallery.pictures().stream().filter(p -> p.name().equals(name)).findFirst().orElseThrow();
+    }
+
+    /** The mean of each channel over the (2r + 1)² pixels around (x, y), packed as three doubles. */
+    private static double[] boxMean(BufferedImage image, int x, int y, int r) {
+        double[] mean = new double[3];
+        for (int dy = -r; dy <= r; ++dy)
+            for (int dx = -r; dx <= r; ++dx) {
+                int rgb = image.getRGB(x + dx, y + dy);
+                for (int c = 0; c < 3; ++c)
+                    mean[c] += ((rgb >> (8 * c)) & 0xFF) / (double) ((2 * r + 1) * (2 * r + 1));
+            }
+        return mean;
+    }
+
     /** Test method for {@link Gallery#pictures()} and {@link Gallery#render(Picture, Path)}. */
     @Test
     void testEveryPictureRenders() {
@@ -66,9 +83,7 @@ class GalleryTest {
      */
     @Test
     void testSceneAMatchesReport() throws IOException {
-        Picture sceneA = Gallery.pictures().stream().filter(p -> p.name().equals("sphereOnTriangles"))
-                .findFirst().orElseThrow();
-        Render render = Gallery.render(sceneA, FOLDER);
+        Render render = Gallery.render(picture("sphereOnTriangles"), FOLDER);
         BufferedImage report = reportImage("A-sphere-on-triangles-hard.png");
 
         // ===== Equivalence Partitions Tests =====
@@ -94,5 +109,37 @@ class GalleryTest {
         // ===== Boundary Values Tests =====
         // TC11: on the seam the report shows its dark line and we do not (the floor is closed there)
         assertTrue(seamPixels > 300, "TC11: the report's seam line should differ from our seamless floor");
+    }
+
+    /**
+     * Test method for {@link Gallery#render(Picture, Path)}: the report's scene A with soft shadows is
+     * the report's soft picture up to noise: averaged over 5 × 5 pixels, within 4 levels everywhere
+     * off the report's seam.
+     */
+    @Test
+    void testSoftSceneAMatchesReport() throws IOException {
+        BufferedImage ours = ImageIO.read(Gallery.render(picture("softSphereOnTriangles"), FOLDER)
+                .getImageWriter().getPath().toFile());
+        BufferedImage report = reportImage("A-sphere-on-triangles-soft.png");
+        int radius = 2;
+        double worst = 0;
+        int penumbraPixels = 0;
+        for (int y = radius; y < 600 - radius; ++y)
+            for (int x = radius; x < 600 - radius; ++x) {
+                if (Math.abs(x + y - 599) <= radius + 4)
+                    continue;
+                double[] a = boxMean(ours, x, y, radius);
+                double[] b = boxMean(report, x, y, radius);
+                for (int c = 0; c < 3; ++c)
+                    worst = Math.max(worst, Math.abs(a[c] - b[c]));
+                if ((ours.getRGB(x, y) & 0xFFFFFF) != (report.getRGB(x, y) & 0xFFFFFF))
+                    ++penumbraPixels;
+            }
+        // ===== Equivalence Partitions Tests =====
+        // TC01: off the seam, the 5 × 5 means agree within 4 levels (the pictures differ only by noise)
+        assertTrue(worst <= 4, "TC01: the soft picture departs from the report's by " + worst + " levels");
+        // ===== Boundary Values Tests =====
+        // TC11: the two renders are not the same noise: many single pixels differ
+        assertTrue(penumbraPixels > 1000, "TC11: expected the report's and our noise to differ, " + penumbraPixels);
     }
 }

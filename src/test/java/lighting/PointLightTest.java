@@ -3,6 +3,7 @@ package lighting;
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertColor;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSquareAxes;
 
 import org.junit.jupiter.api.Test;
 
@@ -217,5 +218,214 @@ class PointLightTest {
         // ===== Boundary Values Tests =====
         // TC10: kQ 0 is accepted
         assertEquals(0, light.setKq(0).getKq(), 0, "TC10: kQ 0 must be accepted");
+    }
+
+    /** Asserts that a vector is not null and of unit length. */
+    private static void assertUnit(Vector u, String message) {
+        assertNotNull(u, message + " (null)");
+        assertEquals(1, u.length(), DELTA, message + " (length must be 1)");
+    }
+
+    /**
+     * Asserts that the light's square seen from p faces p: U(p) and V(p) are unit, orthogonal to each
+     * other and to l = getL(p), so |(U × V) · l| = 1.
+     */
+    private static void assertFacing(PointLight light, Point3D p, String tc) {
+        assertSquareAxes(light.getU(p), light.getV(p), light.getL(p), tc);
+    }
+
+    /** Test method for {@link lighting.PointLight#setEdgesSize(double)} and {@link lighting.PointLight#getEdges()}. */
+    @Test
+    void testSetEdgesSize() {
+        PointLight light = new PointLight(I, POSITION);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the default edge is 0 (a true point light)
+        assertEquals(0, light.getEdges(), 0, "TC01: default edge must be 0");
+        // TC02: setEdgesSize(2.5) returns the light itself and getEdges gives 2.5
+        assertSame(light, light.setEdgesSize(2.5), "TC02: setEdgesSize must return this");
+        assertEquals(2.5, light.getEdges(), 0, "TC02: wrong edge");
+        // TC03: a negative edge (-1) is rejected, the message names the "edge"; the edge stays 2.5
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> light.setEdgesSize(-1),
+                "TC03: negative edge must be rejected");
+        assertMessage(e, "edge", "TC03");
+        assertEquals(2.5, light.getEdges(), 0, "TC03: a rejected edge must leave the edge 2.5");
+        // TC04: NaN and ±infinite edges are rejected, the message names the "edge"; the edge stays 2.5
+        for (double bad : new double[] { Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY }) {
+            e = assertThrows(IllegalArgumentException.class, () -> light.setEdgesSize(bad),
+                    "TC04: edge " + bad + " must be rejected");
+            assertMessage(e, "edge", "TC04");
+        }
+        assertEquals(2.5, light.getEdges(), 0, "TC04: a rejected edge must leave the edge 2.5");
+        // TC05: the edge does not change the light's position (1, 2, 3) or intensity (300, 150, 60) at d 5
+        assertEquals(new Point3D(1, 2, 3), light.getPosition(), "TC05: the edge must not move the light");
+        assertColor(300, 150, 60, light.getIntensity(new Point3D(4, 6, 3)), "TC05: the edge must not change intensity");
+
+        // ===== Boundary Values Tests =====
+        // TC10: edge 0 is accepted (back to a point light) and returned
+        assertSame(light, light.setEdgesSize(0), "TC10: setEdgesSize must return this");
+        assertEquals(0, light.getEdges(), 0, "TC10: edge 0 must be accepted");
+        // TC11: a tiny positive edge 1e-9 is accepted and returned
+        assertEquals(1e-9, light.setEdgesSize(1e-9).getEdges(), 0, "TC11: edge 1e-9 must be accepted");
+        // TC12: negative zero is not negative: accepted, the edge is 0
+        assertEquals(0, light.setEdgesSize(-0.0).getEdges(), 0, "TC12: edge -0.0 must be accepted as 0");
+    }
+
+    /** Test method for {@link lighting.PointLight#getCenter()}. */
+    @Test
+    void testGetCenter() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the centre of the square is the light's position (1, 2, 3)
+        PointLight light = new PointLight(I, POSITION);
+        assertEquals(new Point3D(1, 2, 3), light.getCenter(), "TC01: the centre must be the position");
+        assertEquals(light.getPosition(), light.getCenter(), "TC01: the centre must be getPosition()");
+        // TC02: with an edge 4 and U, V set the centre is still (1, 2, 3)
+        light.setEdgesSize(4).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0));
+        assertEquals(new Point3D(1, 2, 3), light.getCenter(), "TC02: the square must stay centred at the position");
+
+        // ===== Boundary Values Tests =====
+        // TC10: a light at the origin has its centre at the origin (0, 0, 0)
+        assertEquals(Point3D.ZERO, new PointLight(I, Point3D.ZERO).getCenter(), "TC10: wrong centre at the origin");
+    }
+
+    /** Test method for {@link lighting.PointLight#setUV(primitives.Vector, primitives.Vector)}, {@link lighting.PointLight#getU()} and {@link lighting.PointLight#getV()}. */
+    @Test
+    void testSetUV() {
+        PointLight light = new PointLight(I, POSITION);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: before setUV, getU() and getV() are null
+        assertNull(light.getU(), "TC01: U must be null before setUV");
+        assertNull(light.getV(), "TC01: V must be null before setUV");
+        // TC02: setUV((2, 0, 0), (0, 0, 3)) returns the light, stores the units (1, 0, 0) and (0, 0, 1),
+        // and leaves the caller's vectors unchanged
+        Vector u = new Vector(2, 0, 0);
+        Vector v = new Vector(0, 0, 3);
+        assertSame(light, light.setUV(u, v), "TC02: setUV must return this");
+        assertEquals(new Vector(1, 0, 0), light.getU(), "TC02: wrong U");
+        assertEquals(new Vector(0, 0, 1), light.getV(), "TC02: wrong V");
+        assertUnit(light.getU(), "TC02: U must be unit");
+        assertUnit(light.getV(), "TC02: V must be unit");
+        assertEquals(new Vector(2, 0, 0), u, "TC02: the caller's U changed");
+        assertEquals(2, u.length(), DELTA, "TC02: the caller's U changed length");
+        assertEquals(new Vector(0, 0, 3), v, "TC02: the caller's V changed");
+        assertEquals(3, v.length(), DELTA, "TC02: the caller's V changed length");
+        // TC03: general orthogonal (1, 2, 3) and (0, 3, -2) become (1, 2, 3)/sqrt14 and (0, 3, -2)/sqrt13
+        double s14 = Math.sqrt(14);
+        double s13 = Math.sqrt(13);
+        light.setUV(new Vector(1, 2, 3), new Vector(0, 3, -2));
+        assertEquals(new Vector(1 / s14, 2 / s14, 3 / s14), light.getU(), "TC03: wrong U");
+        assertEquals(new Vector(0, 3 / s13, -2 / s13), light.getV(), "TC03: wrong V");
+        assertEquals(0, light.getU().dotProduct(light.getV()), DELTA, "TC03: U·V must be 0");
+        // TC04: U, V not orthogonal ((1, 0, 0), (1, 1, 0)) are rejected, the message names "orthogonal";
+        // U and V stay as in TC03
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> light.setUV(new Vector(1, 0, 0), new Vector(1, 1, 0)), "TC04: non-orthogonal U, V accepted");
+        assertMessage(e, "orthogonal", "TC04");
+        assertEquals(new Vector(1 / s14, 2 / s14, 3 / s14), light.getU(), "TC04: a rejected U must leave U");
+        assertEquals(new Vector(0, 3 / s13, -2 / s13), light.getV(), "TC04: a rejected V must leave V");
+        // TC05: a null U or V is rejected with IllegalArgumentException (not NullPointerException), naming "null"
+        e = assertThrows(IllegalArgumentException.class, () -> light.setUV(null, new Vector(0, 1, 0)),
+                "TC05: null U must be rejected");
+        assertMessage(e, "null", "TC05");
+        e = assertThrows(IllegalArgumentException.class, () -> light.setUV(new Vector(1, 0, 0), null),
+                "TC05: null V must be rejected");
+        assertMessage(e, "null", "TC05");
+        e = assertThrows(IllegalArgumentException.class, () -> light.setUV(null, null),
+                "TC05: null U and V must be rejected");
+        assertMessage(e, "null", "TC05");
+
+        // ===== Boundary Values Tests =====
+        // TC10: parallel U, V ((1, 0, 0), (3, 0, 0)) are rejected, the message names "orthogonal"
+        e = assertThrows(IllegalArgumentException.class,
+                () -> light.setUV(new Vector(1, 0, 0), new Vector(3, 0, 0)), "TC10: parallel U, V accepted");
+        assertMessage(e, "orthogonal", "TC10");
+        // TC11: opposite U, V ((0, 1, 0), (0, -1, 0)) are rejected, the message names "orthogonal"
+        e = assertThrows(IllegalArgumentException.class,
+                () -> light.setUV(new Vector(0, 1, 0), new Vector(0, -1, 0)), "TC11: opposite U, V accepted");
+        assertMessage(e, "orthogonal", "TC11");
+        // TC12: nearly orthogonal U, V (unit dot product about 1e-3) are rejected, naming "orthogonal"
+        e = assertThrows(IllegalArgumentException.class,
+                () -> light.setUV(new Vector(1, 0, 0), new Vector(1e-3, 1, 0)), "TC12: nearly orthogonal U, V accepted");
+        assertMessage(e, "orthogonal", "TC12");
+        // TC13: orthogonal U, V of very different lengths (1e-6, 0, 0), (0, 1e6, 0): units (1, 0, 0), (0, 1, 0)
+        light.setUV(new Vector(1e-6, 0, 0), new Vector(0, 1e6, 0));
+        assertEquals(new Vector(1, 0, 0), light.getU(), "TC13: wrong U");
+        assertEquals(new Vector(0, 1, 0), light.getV(), "TC13: wrong V");
+        // TC14: a second setUV replaces the first: (0, 0, -1), (1, 0, 0)
+        light.setUV(new Vector(0, 0, -5), new Vector(7, 0, 0));
+        assertEquals(new Vector(0, 0, -1), light.getU(), "TC14: setUV must replace U");
+        assertEquals(new Vector(1, 0, 0), light.getV(), "TC14: setUV must replace V");
+    }
+
+    /** Test method for {@link lighting.PointLight#getU(primitives.Point3D)} and {@link lighting.PointLight#getV(primitives.Point3D)} when U, V were set. */
+    @Test
+    void testGetUVAtPointWhenSet() {
+        PointLight light = new PointLight(I, POSITION).setUV(new Vector(0, 3, 0), new Vector(0, 0, -2));
+        Point3D[] points = { new Point3D(4, 6, 3), new Point3D(-1, 0, 2), new Point3D(1, 2, 13),
+                new Point3D(11, 2, 3), new Point3D(-100, 50, 7) };
+        // ===== Equivalence Partitions Tests =====
+        // TC01: for points in any direction, U(p) = (0, 1, 0) and V(p) = (0, 0, -1), the set vectors
+        for (Point3D p : points) {
+            assertEquals(new Vector(0, 1, 0), light.getU(p), "TC01: U(p) must be the set U at " + p);
+            assertEquals(new Vector(0, 0, -1), light.getV(p), "TC01: V(p) must be the set V at " + p);
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC10: a point along the set U from the light, (1, 12, 3): still U(p) = (0, 1, 0), V(p) = (0, 0, -1)
+        Point3D alongU = new Point3D(1, 12, 3);
+        assertEquals(new Vector(0, 1, 0), light.getU(alongU), "TC10: U(p) must be the set U");
+        assertEquals(new Vector(0, 0, -1), light.getV(alongU), "TC10: V(p) must be the set V");
+    }
+
+    /** Test method for {@link lighting.PointLight#getU(primitives.Point3D)} and {@link lighting.PointLight#getV(primitives.Point3D)} when U, V were not set (the square faces the point). */
+    @Test
+    void testGetUVAtPointWhenUnset() {
+        PointLight light = new PointLight(I, POSITION).setEdgesSize(2);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: point (4, 6, 3), l = (0.6, 0.8, 0): U(p), V(p) unit, orthogonal to each other and to l
+        assertFacing(light, new Point3D(4, 6, 3), "TC01");
+        // TC02: point (-1, 0, 2), l = (-2/3, -2/3, -1/3): U(p), V(p) unit, orthogonal to each other and to l
+        assertFacing(light, new Point3D(-1, 0, 2), "TC02");
+        // TC03: 500 points drawn from Random(7) in [-50, 50)³: the square faces each of them
+        java.util.Random random = new java.util.Random(7);
+        for (int i = 0; i < 500; ++i)
+            assertFacing(light, new Point3D(random.nextDouble() * 100 - 50, random.nextDouble() * 100 - 50,
+                    random.nextDouble() * 100 - 50), "TC03 (point " + i + ")");
+        // TC04: deterministic: the same point, and an equal point, give equal U(p) and V(p)
+        Point3D p = new Point3D(4, 6, 3);
+        assertEquals(light.getU(p), light.getU(p), "TC04: U(p) must be deterministic");
+        assertEquals(light.getV(p), light.getV(p), "TC04: V(p) must be deterministic");
+        assertEquals(light.getU(p), light.getU(new Point3D(4, 6, 3)), "TC04: equal points must give equal U(p)");
+        assertEquals(light.getV(p), light.getV(new Point3D(4, 6, 3)), "TC04: equal points must give equal V(p)");
+        // TC05: points on the same ray from the light, (4, 6, 3) and (7, 10, 3), see the same square
+        assertEquals(light.getU(p), light.getU(new Point3D(7, 10, 3)), "TC05: same direction must give the same U");
+        assertEquals(light.getV(p), light.getV(new Point3D(7, 10, 3)), "TC05: same direction must give the same V");
+        // TC06: asking U(p), V(p) does not set U, V: getU() and getV() stay null
+        assertNull(light.getU(), "TC06: getU(p) must not set U");
+        assertNull(light.getV(), "TC06: getV(p) must not set V");
+        // TC07: a null point is rejected with IllegalArgumentException, the message names the "point"
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> light.getU(null),
+                "TC07: null point must be rejected by getU");
+        assertMessage(e, "point", "TC07");
+        e = assertThrows(IllegalArgumentException.class, () -> light.getV(null),
+                "TC07: null point must be rejected by getV");
+        assertMessage(e, "point", "TC07");
+
+        // ===== Boundary Values Tests =====
+        // TC10: points along each coordinate axis from the light, both senses (l = ±x, ±y, ±z): facing squares
+        Point3D[] onAxes = { new Point3D(11, 2, 3), new Point3D(-9, 2, 3), new Point3D(1, 12, 3),
+                new Point3D(1, -8, 3), new Point3D(1, 2, 13), new Point3D(1, 2, -7) };
+        for (Point3D a : onAxes)
+            assertFacing(light, a, "TC10 at " + a);
+        // TC11: a point very near the light, (1, 2, 3 + 1e-6): facing square, l = (0, 0, 1)
+        assertFacing(light, new Point3D(1, 2, 3 + 1e-6), "TC11");
+        // TC12: a point very far, (1e6, -2e6, 3e6): facing square
+        assertFacing(light, new Point3D(1e6, -2e6, 3e6), "TC12");
+        // TC13: the light's own position has no direction: rejected, the message names the "position"
+        e = assertThrows(IllegalArgumentException.class, () -> light.getU(new Point3D(1, 2, 3)),
+                "TC13: U at the light's position must be rejected");
+        assertMessage(e, "position", "TC13");
+        e = assertThrows(IllegalArgumentException.class, () -> light.getV(new Point3D(1, 2, 3)),
+                "TC13: V at the light's position must be rejected");
+        assertMessage(e, "position", "TC13");
     }
 }

@@ -3,6 +3,7 @@ package lighting;
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertColor;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSquareAxes;
 
 import org.junit.jupiter.api.Test;
 
@@ -185,5 +186,151 @@ class SpotLightTest {
         // TC10: factors 0 are accepted (kC 0 with kL 1: on the axis at d 10 -> I / 10 = (20, 10, 4))
         assertColor(20, 10, 4, light().setKc(0).setKl(1).setKq(0).getIntensity(ON_AXIS),
                 "TC10: wrong intensity with kC 0, kL 1");
+    }
+
+    /**
+     * Asserts the default square of a spot light: getU(), getV() non-null, unit, orthogonal to each
+     * other and to the spot direction (so |(U × V)·dir| = 1).
+     */
+    private static void assertPerpendicularSquare(SpotLight spot, String tc) {
+        assertSquareAxes(spot.getU(), spot.getV(), spot.getDirection(), tc);
+    }
+
+    /** Test method for {@link lighting.SpotLight} as an {@link lighting.AreaLightSource}. */
+    @Test
+    void testAreaLightSource() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a spot light is an AreaLightSource (and a PointLight)
+        SpotLight spot = new SpotLight(I, new Point3D(1, -2, 3), new Vector(0, 0, -1));
+        assertInstanceOf(AreaLightSource.class, spot, "TC01: a spot light must be an AreaLightSource");
+        assertInstanceOf(PointLight.class, spot, "TC01: a spot light must be a PointLight");
+        // TC02: through the interface: centre (1, -2, 3), edge 0 by default, then 3 after setEdgesSize(3)
+        AreaLightSource area = spot;
+        assertEquals(new Point3D(1, -2, 3), area.getCenter(), "TC02: the centre must be the position");
+        assertEquals(0, area.getEdges(), 0, "TC02: default edge must be 0");
+        spot.setEdgesSize(3);
+        assertEquals(3, area.getEdges(), 0, "TC02: wrong edge through the interface");
+
+        // ===== Boundary Values Tests =====
+        // TC10: a negative edge (-0.5) is rejected, naming the "edge"; the edge stays 3
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> spot.setEdgesSize(-0.5),
+                "TC10: negative edge must be rejected");
+        assertMessage(e, "edge", "TC10");
+        assertEquals(3, spot.getEdges(), 0, "TC10: a rejected edge must leave the edge 3");
+    }
+
+    /** Test method for the chainable {@link lighting.SpotLight#setEdgesSize(double)} and {@link lighting.SpotLight#setUV(primitives.Vector, primitives.Vector)}. */
+    @Test
+    void testAreaSettersChaining() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: setEdgesSize and setUV return the SpotLight itself, so setNarrowBeam can follow
+        SpotLight spot = light();
+        SpotLight chained = spot.setEdgesSize(2).setUV(new Vector(3, 0, 0), new Vector(0, 4, 0)).setNarrowBeam(3);
+        assertSame(spot, chained, "TC01: the setters must return this");
+        assertEquals(2, spot.getEdges(), 0, "TC01: wrong edge");
+        assertEquals(new Vector(1, 0, 0), spot.getU(), "TC01: wrong U");
+        assertEquals(new Vector(0, 1, 0), spot.getV(), "TC01: wrong V");
+        assertEquals(3, spot.getNarrowBeam(), 0, "TC01: wrong narrow beam");
+        // TC02: in the other order, setUV then setEdgesSize then setKl, also the same SpotLight
+        SpotLight other = light();
+        assertSame(other, other.setUV(new Vector(0, 1, 0), new Vector(1, 0, 0)).setEdgesSize(5).setKl(0.1),
+                "TC02: the setters must return this");
+        assertEquals(5, other.getEdges(), 0, "TC02: wrong edge");
+        // TC03: the area does not change the spot's intensity: (200, 100, 40) on the axis, (100, 50, 20) at 60°
+        assertColor(200, 100, 40, light().setEdgesSize(4).getIntensity(ON_AXIS), "TC03: wrong intensity on the axis");
+        assertColor(100, 50, 20, light().setEdgesSize(4).getIntensity(AT_60), "TC03: wrong intensity at 60°");
+        // TC04: U, V not orthogonal are rejected, the message names "orthogonal"
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> light().setUV(new Vector(1, 0, 0), new Vector(1, 0, 1)), "TC04: non-orthogonal U, V accepted");
+        assertMessage(e, "orthogonal", "TC04");
+
+        // ===== Boundary Values Tests =====
+        // TC10: edge 0 is accepted, the spot stays a true point light
+        assertEquals(0, light().setEdgesSize(0).getEdges(), 0, "TC10: edge 0 must be accepted");
+    }
+
+    /** Test method for {@link lighting.SpotLight#getU()} and {@link lighting.SpotLight#getV()} when U, V were not set. */
+    @Test
+    void testDefaultUV() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: spot toward -z: U, V non-null, unit, orthogonal to each other and to (0, 0, -1)
+        SpotLight spot = light();
+        assertPerpendicularSquare(spot, "TC01");
+        // TC02: general directions (1, 2, 3), (0, 3, -4), (-5, 1, -2): the square is perpendicular to them
+        assertPerpendicularSquare(new SpotLight(I, Point3D.ZERO, new Vector(1, 2, 3)), "TC02");
+        assertPerpendicularSquare(new SpotLight(I, new Point3D(1, 1, 1), new Vector(0, 3, -4)), "TC02");
+        assertPerpendicularSquare(new SpotLight(I, new Point3D(-4, 0, 9), new Vector(-5, 1, -2)), "TC02");
+        // TC03: U(p), V(p) equal U, V for points in front, to the side and behind the light
+        Point3D[] points = { ON_AXIS, AT_60, new Point3D(10, 0, 0), new Point3D(0, 0, 10), new Point3D(3, 4, 1),
+                new Point3D(-7, 2, -3) };
+        for (Point3D p : points) {
+            assertEquals(spot.getU(), spot.getU(p), "TC03: U(p) must be the spot's U at " + p);
+            assertEquals(spot.getV(), spot.getV(p), "TC03: V(p) must be the spot's V at " + p);
+        }
+        // TC04: deterministic: twice U, V give equal vectors; two equal spots give equal U, V
+        assertEquals(spot.getU(), spot.getU(), "TC04: U must be deterministic");
+        assertEquals(spot.getV(), spot.getV(), "TC04: V must be deterministic");
+        assertEquals(spot.getU(), light().getU(), "TC04: equal spots must have equal U");
+        assertEquals(spot.getV(), light().getV(), "TC04: equal spots must have equal V");
+        // TC05: setting the edge does not change the default square
+        Vector u = spot.getU();
+        Vector v = spot.getV();
+        spot.setEdgesSize(2);
+        assertEquals(u, spot.getU(), "TC05: the edge must not change U");
+        assertEquals(v, spot.getV(), "TC05: the edge must not change V");
+
+        // ===== Boundary Values Tests =====
+        // TC10: directions along each coordinate axis, both senses: the square is perpendicular to them
+        Vector[] axes = { new Vector(1, 0, 0), new Vector(-1, 0, 0), new Vector(0, 1, 0), new Vector(0, -1, 0),
+                new Vector(0, 0, 1), new Vector(0, 0, -1) };
+        for (Vector axis : axes)
+            assertPerpendicularSquare(new SpotLight(I, Point3D.ZERO, axis), "TC10 direction " + axis);
+        // TC11: a very long direction (0, 0, -1e9) and a very short one (1e-6, 1e-6, 0): perpendicular squares
+        assertPerpendicularSquare(new SpotLight(I, Point3D.ZERO, new Vector(0, 0, -1e9)), "TC11 long");
+        assertPerpendicularSquare(new SpotLight(I, Point3D.ZERO, new Vector(1e-6, 1e-6, 0)), "TC11 short");
+        // TC12: a point on the axis through the light, (0, 0, -1e-6), also sees the spot's U, V
+        assertEquals(spot.getU(), spot.getU(new Point3D(0, 0, -1e-6)), "TC12: U(p) must be the spot's U");
+        assertEquals(spot.getV(), spot.getV(new Point3D(0, 0, -1e-6)), "TC12: V(p) must be the spot's V");
+    }
+
+    /** Test method for {@link lighting.SpotLight#setUV(primitives.Vector, primitives.Vector)} overriding the default square. */
+    @Test
+    void testSetUVOverridesDefault() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: setUV((0, 2, 0), (5, 0, 0)) on a spot toward -z: U = (0, 1, 0), V = (1, 0, 0), also for U(p), V(p)
+        SpotLight spot = light().setUV(new Vector(0, 2, 0), new Vector(5, 0, 0));
+        assertEquals(new Vector(0, 1, 0), spot.getU(), "TC01: set U must override the default");
+        assertEquals(new Vector(1, 0, 0), spot.getV(), "TC01: set V must override the default");
+        for (Point3D p : new Point3D[] { ON_AXIS, AT_60, new Point3D(0, 0, 10) }) {
+            assertEquals(new Vector(0, 1, 0), spot.getU(p), "TC01: U(p) must be the set U at " + p);
+            assertEquals(new Vector(1, 0, 0), spot.getV(p), "TC01: V(p) must be the set V at " + p);
+        }
+        // TC02: a tilted square ((1, 0, 1), (0, 3, 0)), not perpendicular to the direction, is kept as given:
+        // U = (1, 0, 1)/sqrt2, V = (0, 1, 0)
+        double h = Math.sqrt(0.5);
+        SpotLight tilted = light().setUV(new Vector(1, 0, 1), new Vector(0, 3, 0));
+        assertEquals(new Vector(h, 0, h), tilted.getU(), "TC02: wrong tilted U");
+        assertEquals(new Vector(0, 1, 0), tilted.getV(), "TC02: wrong tilted V");
+        assertEquals(new Vector(h, 0, h), tilted.getU(ON_AXIS), "TC02: wrong tilted U(p)");
+        assertEquals(new Vector(0, 1, 0), tilted.getV(ON_AXIS), "TC02: wrong tilted V(p)");
+        // TC03: a rejected setUV (not orthogonal) leaves the default square unchanged
+        SpotLight plain = light();
+        Vector u = plain.getU();
+        Vector v = plain.getV();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> plain.setUV(new Vector(1, 1, 0), new Vector(1, 0, 0)), "TC03: non-orthogonal U, V accepted");
+        assertMessage(e, "orthogonal", "TC03");
+        assertEquals(u, plain.getU(), "TC03: a rejected setUV must leave U");
+        assertEquals(v, plain.getV(), "TC03: a rejected setUV must leave V");
+
+        // ===== Boundary Values Tests =====
+        // TC10: U set along the spot's direction ((0, 0, -1), (1, 0, 0)) is accepted as given
+        SpotLight edgeOn = light().setUV(new Vector(0, 0, -1), new Vector(1, 0, 0));
+        assertEquals(new Vector(0, 0, -1), edgeOn.getU(), "TC10: wrong U along the direction");
+        assertEquals(new Vector(1, 0, 0), edgeOn.getV(), "TC10: wrong V");
+        // TC11: null U is rejected with IllegalArgumentException (not NullPointerException), naming "null"
+        e = assertThrows(IllegalArgumentException.class, () -> light().setUV(null, new Vector(1, 0, 0)),
+                "TC11: null U must be rejected");
+        assertMessage(e, "null", "TC11");
     }
 }

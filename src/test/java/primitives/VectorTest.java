@@ -364,4 +364,105 @@ class VectorTest {
         // TC11: beyond the tolerance (2e-10): not equal
         assertNotEquals(v, new Vector(1, 2 + 2e-10, 3), "TC11: vectors beyond the tolerance must differ");
     }
+
+    /**
+     * Asserts that u is a unit vector orthogonal to v; the dot product is taken with v scaled by its
+     * largest component, so the check does not depend on v's length (and cannot overflow).
+     */
+    private static void assertUnitOrthogonal(Vector v, Vector u, String tc) {
+        assertNotNull(u, tc + ": orthogonal() must not return null");
+        assertEquals(1, u.length(), DELTA, tc + ": orthogonal vector must be unit (length 1)");
+        double m = Math.max(Math.abs(v.getX()), Math.max(Math.abs(v.getY()), Math.abs(v.getZ())));
+        double dot = u.getX() * (v.getX() / m) + u.getY() * (v.getY() / m) + u.getZ() * (v.getZ() / m);
+        assertEquals(0, dot, DELTA, tc + ": orthogonal vector must be orthogonal (dot product 0) to " + v);
+    }
+
+    /** Test method for {@link primitives.Vector#orthogonal()} on vectors along the coordinate axes. */
+    @Test
+    void testOrthogonalAxes() {
+        // ===== Boundary Values Tests =====
+        // TC10: along +x, +y, +z (1 on one axis, 0 on the others): a unit vector with dot product 0
+        Vector[] axes = { new Vector(1, 0, 0), new Vector(0, 1, 0), new Vector(0, 0, 1) };
+        for (Vector axis : axes)
+            assertUnitOrthogonal(axis, axis.orthogonal(), "TC10");
+        // TC11: along -x, -y, -z: a unit vector with dot product 0
+        Vector[] negativeAxes = { new Vector(-1, 0, 0), new Vector(0, -1, 0), new Vector(0, 0, -1) };
+        for (Vector axis : negativeAxes)
+            assertUnitOrthogonal(axis, axis.orthogonal(), "TC11");
+        // TC12: long along an axis (0, 0, 250): a unit vector with dot product 0
+        assertUnitOrthogonal(new Vector(0, 0, 250), new Vector(0, 0, 250).orthogonal(), "TC12");
+        // TC13: in a coordinate plane, on the diagonal (1, 1, 0) and (0, -2, 2): unit, dot product 0
+        assertUnitOrthogonal(new Vector(1, 1, 0), new Vector(1, 1, 0).orthogonal(), "TC13");
+        assertUnitOrthogonal(new Vector(0, -2, 2), new Vector(0, -2, 2).orthogonal(), "TC13");
+    }
+
+    /** Test method for {@link primitives.Vector#orthogonal()} on general vectors. */
+    @Test
+    void testOrthogonalGeneral() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: (1, 2, 3): a unit vector with dot product 0
+        assertUnitOrthogonal(new Vector(1, 2, 3), new Vector(1, 2, 3).orthogonal(), "TC01");
+        // TC02: negative components (-3, -4, 5) and (2, -7, -1): unit, dot product 0
+        assertUnitOrthogonal(new Vector(-3, -4, 5), new Vector(-3, -4, 5).orthogonal(), "TC02");
+        assertUnitOrthogonal(new Vector(2, -7, -1), new Vector(2, -7, -1).orthogonal(), "TC02");
+        // TC03: 1000 vectors drawn from Random(42), components in [-10, 10): unit, dot product 0
+        java.util.Random random = new java.util.Random(42);
+        for (int i = 0; i < 1000; ++i) {
+            Vector v = new Vector(random.nextDouble() * 20 - 10, random.nextDouble() * 20 - 10,
+                    random.nextDouble() * 20 - 10);
+            assertUnitOrthogonal(v, v.orthogonal(), "TC03 (vector " + i + ")");
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC10: all components equal in magnitude, (1, 1, 1) and (-1, 1, -1) (ties): unit, dot product 0
+        assertUnitOrthogonal(new Vector(1, 1, 1), new Vector(1, 1, 1).orthogonal(), "TC10");
+        assertUnitOrthogonal(new Vector(-1, 1, -1), new Vector(-1, 1, -1).orthogonal(), "TC10");
+        // TC11: almost along an axis, (1, 1e-9, -1e-9): unit, dot product 0
+        assertUnitOrthogonal(new Vector(1, 1e-9, -1e-9), new Vector(1, 1e-9, -1e-9).orthogonal(), "TC11");
+    }
+
+    /** Test method for {@link primitives.Vector#orthogonal()} on very long and very short vectors. */
+    @Test
+    void testOrthogonalExtremeLengths() {
+        // ===== Boundary Values Tests =====
+        // TC10: very long (1e12, -2e12, 3e12): unit, dot product 0
+        assertUnitOrthogonal(new Vector(1e12, -2e12, 3e12), new Vector(1e12, -2e12, 3e12).orthogonal(), "TC10");
+        // TC11: huge (1e200, 2e200, -3e200), whose squared length overflows a double: still unit, dot product 0
+        assertUnitOrthogonal(new Vector(1e200, 2e200, -3e200), new Vector(1e200, 2e200, -3e200).orthogonal(),
+                "TC11");
+        // TC12: length 1e-6 along an axis, (1e-6, 0, 0): unit, dot product 0
+        assertUnitOrthogonal(new Vector(1e-6, 0, 0), new Vector(1e-6, 0, 0).orthogonal(), "TC12");
+        // TC13: length 1e-6 off the axes, (0, 6e-7, -8e-7) and (2e-7, -3e-7, 6e-7)·(1/0.7): unit, dot product 0
+        assertUnitOrthogonal(new Vector(0, 6e-7, -8e-7), new Vector(0, 6e-7, -8e-7).orthogonal(), "TC13");
+        Vector tiny = new Vector(2e-7 / 0.7, -3e-7 / 0.7, 6e-7 / 0.7);
+        assertEquals(1e-6, tiny.length(), 1e-16, "TC13: the test vector must have length 1e-6");
+        assertUnitOrthogonal(tiny, tiny.orthogonal(), "TC13");
+        // TC14: the smallest non-zero components, (1e-10, 1e-10, 1e-10): unit, dot product 0
+        assertUnitOrthogonal(new Vector(1e-10, 1e-10, 1e-10), new Vector(1e-10, 1e-10, 1e-10).orthogonal(), "TC14");
+    }
+
+    /** Test method for {@link primitives.Vector#orthogonal()}: a new object, the original unchanged, deterministic. */
+    @Test
+    void testOrthogonalNewAndDeterministic() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: (1, 2, 3).orthogonal() is a new object; the original stays (1, 2, 3)
+        Vector v = new Vector(1, 2, 3);
+        Vector u = v.orthogonal();
+        assertNotSame(v, u, "TC01: orthogonal must return a new vector");
+        assertComponents(1, 2, 3, v, "TC01: orthogonal changed the original vector");
+        // TC02: calling it again on the same vector gives an equal vector, again a new object
+        Vector again = v.orthogonal();
+        assertEquals(u, again, "TC02: the same vector must give the same orthogonal vector");
+        assertNotSame(u, again, "TC02: each call must return a new vector");
+        // TC03: an equal vector (another object (1, 2, 3)) gives an equal orthogonal vector
+        assertEquals(u, new Vector(1, 2, 3).orthogonal(), "TC03: equal vectors must give equal orthogonal vectors");
+
+        // ===== Boundary Values Tests =====
+        // TC10: a unit axis vector (0, 0, -1) stays (0, 0, -1) and twice gives equal results
+        Vector axis = new Vector(0, 0, -1);
+        Vector a1 = axis.orthogonal();
+        assertNotSame(axis, a1, "TC10: orthogonal must return a new vector");
+        assertComponents(0, 0, -1, axis, "TC10: orthogonal changed the original vector");
+        assertEquals(a1, axis.orthogonal(), "TC10: the same vector must give the same orthogonal vector");
+    }
 }

@@ -1,16 +1,23 @@
 package renderer;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertColor;
 
+import java.nio.file.Path;
+
 import org.junit.jupiter.api.Test;
 
+import geometries.Intersectable.GeoPoint;
 import geometries.Plane;
+import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
+import lighting.LightSource;
 import lighting.PointLight;
 import primitives.Color;
 import primitives.Material;
@@ -177,5 +184,301 @@ class RayTracerBasicTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new RayTracerBasic(null),
                 "TC11: a null scene must be rejected");
         assertTrue(e.getMessage().contains("scene"), "TC11: the message must name the scene");
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Soft shadows. The lit point is the origin of the floor z = 0; the light is a square of edge 20
+    // centred 100 above it, its sides along x and y. An opaque half-plane z = 50, x < x0, hides the
+    // part of the square with x < 2·x0 (similar triangles), so the visible fraction of the light's
+    // area is clamp((10 − 2·x0) / 20, 0, 1).
+    // ---------------------------------------------------------------------------------------------
+
+    private static final double SOFT_DELTA = 0.08;
+    private static final double LIGHT_EDGE = 20;
+    private static final Point3D LIGHT_CENTER = new Point3D(0, 0, 100);
+    private static final Vector FLOOR_NORMAL = new Vector(0, 0, 1);
+
+    /** The square light above the origin, its sides along x and y. */
+    private static PointLight squareLight() {
+        return new PointLight(new Color(100, 100, 100), LIGHT_CENTER).setEdgesSize(LIGHT_EDGE)
+                .setUV(new Vector(1, 0, 0), new Vector(0, 1, 0));
+    }
+
+    /** A large horizontal square at height z covering x < x0, with the given material. */
+    private static Polygon halfPlane(double x0, double z, Material material) {
+        Polygon polygon = new Polygon(new Point3D(-1000, -1000, z), new Point3D(x0, -1000, z),
+                new Point3D(x0, 1000, z), new Point3D(-1000, 1000, z));
+        polygon.setMaterial(material);
+        return polygon;
+    }
+
+    /** The visible fraction of the square light over the origin with the half-plane edge at x0. */
+    private static double visibleFraction(double x0) {
+        return Math.max(0, Math.min(1, (LIGHT_EDGE / 2 - 2 * x0) / LIGHT_EDGE));
+    }
+
+    /** A ray tracer for the floor and the given blockers, soft shadows on with sqrtBeamNum k. */
+    private static RayTracerBasic softTracer(int k, Polygon... blockers) {
+        Scene scene = new Scene("soft");
+        Plane floor = floor(new Material().setKd(1), Color.BLACK);
+        scene.geometries.add(floor);
+        scene.geometries.add(blockers);
+        RayTracerBasic tracer = new RayTracerBasic(scene);
+        tracer.setSoftShadows(true).setSqrtBeamNum(k);
+        return tracer;
+    }
+
+    /** The shadow factor of a light at the origin of the tracer's floor (its first body), for pixel (j, 0). */
+    private static double shadowFactor(RayTracerBasic tracer, LightSource light, int j) {
+        tracer.startPixel(j, 0);
+        Plane floor = (Plane) tracer.scene.geometries.getGeometries().get(0);
+        return tracer.transparency(light, light.getL(Point3D.ZERO), FLOOR_NORMAL, new GeoPoint(floor, Point3D.ZERO));
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#calcSoftShadows}: the shadow factor is the visible
+     * fraction of the light's area.
+     */
+    @Test
+    void testCalcSoftShadowsVisibleFraction() {
+        PointLight light = squareLight();
+        // ===== Equivalence Partitions Tests =====
+        // TC01..TC03: the half-plane hides 75 %, 50 %, 25 % of the light: factor 0.25, 0.5, 0.75 (± 0.08)
+        double[] partialEdges = { 2.5, 0, -2.5 };
+        for (int tc = 0; tc < partialEdges.length; ++tc) {
+            double x0 = partialEdges[tc];
+            for (int j = 0; j < 20; ++j)
+                assertEquals(visibleFraction(x0), shadowFactor(softTracer(9, halfPlane(x0, 50, new Material())), light, j),
+                        SOFT_DELTA, "TC0" + (tc + 1) + ": wrong shadow factor for the edge at x = " + x0);
+        }
+        // ===== Boundary Values Tests =====
+        // TC11: the edge just past the light's square on the hidden side: the whole light is seen, exactly 1
+        assertEquals(1.0, shadowFactor(softTracer(9, halfPlane(-5.5, 50, new Material())), light, 0), 0,
+                "TC11: a fully visible light must give exactly 1");
+        // TC12: the edge just past the square on the other side: the light is hidden, exactly 0
+        assertEquals(0.0, shadowFactor(softTracer(9, halfPlane(5.5, 50, new Material())), light, 0), 0,
+                "TC12: a fully hidden light must give exactly 0");
+        // TC13: a point light whose U, V were not set faces the point: the same square here, 0.25 (± 0.08)
+        PointLight facing = new PointLight(new Color(100, 100, 100), LIGHT_CENTER).setEdgesSize(LIGHT_EDGE);
+        assertEquals(0.25, shadowFactor(softTracer(9, halfPlane(2.5, 50, new Material())), facing, 0), SOFT_DELTA,
+                "TC13: a square facing the point must hide the same fraction");
+    }
+
+    /** Test method for {@link RayTracerBasic#calcSoftShadows}: more shadow rays, smaller error. */
+    @Test
+    void testCalcSoftShadowsConvergence() {
+        PointLight light = squareLight();
+        double x0 = 2.2; // the edge off the cell boundaries of every grid below
+        int[] grids = { 2, 4, 8, 16 };
+        double[] errors = new double[grids.length];
+        for (int g = 0; g < grids.length; ++g) {
+            RayTracerBasic tracer = softTracer(grids[g], halfPlane(x0, 50, new Material()));
+            for (int j = 0; j < 40; ++j)
+                errors[g] += Math.abs(shadowFactor(tracer, light, j) - visibleFraction(x0)) / 40;
+        }
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the mean error over 40 pixels shrinks as sqrtBeamNum grows from 2 to 16
+        for (int g = 1; g < grids.length; ++g)
+            assertTrue(errors[g] < errors[g - 1], "TC01: error with sqrtBeamNum " + grids[g] + " (" + errors[g]
+                    + ") must be below the error with " + grids[g - 1] + " (" + errors[g - 1] + ")");
+        // ===== Boundary Values Tests =====
+        // TC11: with 16 × 16 rays the mean error is under 0.01
+        assertTrue(errors[grids.length - 1] < 0.01, "TC11: error with 256 rays too large: " + errors[grids.length - 1]);
+    }
+
+    /** Test method for {@link RayTracerBasic#calcSoftShadows}: light through transparent bodies. */
+    @Test
+    void testCalcSoftShadowsTransparent() {
+        PointLight light = squareLight();
+        Material half = new Material().setKt(0.5);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: one kT 0.5 sheet over the whole light: 0.5
+        assertEquals(0.5, shadowFactor(softTracer(9, halfPlane(500, 50, half)), light, 0), 1e-12,
+                "TC01: one transparent sheet must let half the light through");
+        // TC02: two kT 0.5 sheets: 0.25
+        assertEquals(0.25, shadowFactor(softTracer(9, halfPlane(500, 50, half), halfPlane(500, 70, half)), light, 0),
+                1e-12, "TC02: two transparent sheets must let a quarter of the light through");
+        // ===== Boundary Values Tests =====
+        // TC11: a sheet beyond the light casts no shadow: 1
+        assertEquals(1.0, shadowFactor(softTracer(9, halfPlane(500, 150, new Material())), light, 0), 0,
+                "TC11: a body beyond the light must not shadow");
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#transparency}: with soft shadows off, a light of edge 0,
+     * or a light with no area, the factor is the single ray to the light's centre.
+     */
+    @Test
+    void testTransparencySingleRay() {
+        PointLight light = squareLight();
+        // the edge at x0 = -2.5 leaves the centre visible (1) though a quarter of the light is hidden
+        RayTracerBasic hard = softTracer(9, halfPlane(-2.5, 50, new Material()));
+        hard.setSoftShadows(false);
+        long before = hard.getShadowRaysCount();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: soft shadows off: exactly the centre ray's 1, with one shadow ray
+        assertEquals(1.0, shadowFactor(hard, light, 0), 0, "TC01: soft shadows off must trace the centre ray only");
+        assertEquals(1, hard.getShadowRaysCount() - before, "TC01: soft shadows off must trace one shadow ray");
+        // TC02: soft shadows off, the centre hidden (edge at x0 = 2.5): exactly 0
+        RayTracerBasic hardHidden = softTracer(9, halfPlane(2.5, 50, new Material()));
+        hardHidden.setSoftShadows(false);
+        assertEquals(0.0, shadowFactor(hardHidden, light, 0), 0, "TC02: a hidden centre must give 0");
+        // TC03: a directional light has no area: one ray, 1
+        RayTracerBasic soft = softTracer(9, halfPlane(-2.5, 50, new Material()));
+        before = soft.getShadowRaysCount();
+        assertEquals(1.0, shadowFactor(soft, new DirectionalLight(new Color(1, 1, 1), DOWN), 0), 0,
+                "TC03: a directional light must be seen through one ray");
+        assertEquals(1, soft.getShadowRaysCount() - before, "TC03: a directional light must cost one shadow ray");
+        // ===== Boundary Values Tests =====
+        // TC11: soft shadows on, light of edge 0: the centre ray's 1, with one shadow ray
+        before = soft.getShadowRaysCount();
+        assertEquals(1.0, shadowFactor(soft, squareLight().setEdgesSize(0), 0), 0,
+                "TC11: a light of edge 0 must be a point light");
+        assertEquals(1, soft.getShadowRaysCount() - before, "TC11: a light of edge 0 must cost one shadow ray");
+    }
+
+    /** Test method for {@link RayTracerBasic#calcSoftShadows}: the number of shadow rays. */
+    @Test
+    void testCalcSoftShadowsRayCount() {
+        PointLight light = squareLight();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: sqrtBeamNum 9: 81 rays to the square and 1 to its centre
+        RayTracerBasic tracer = softTracer(9, halfPlane(0, 50, new Material()));
+        long before = tracer.getShadowRaysCount();
+        shadowFactor(tracer, light, 0);
+        assertEquals(82, tracer.getShadowRaysCount() - before, "TC01: sqrtBeamNum 9 must trace 82 shadow rays");
+        // ===== Boundary Values Tests =====
+        // TC11: sqrtBeamNum 1: one ray to the square and one to its centre
+        tracer.setSqrtBeamNum(1);
+        before = tracer.getShadowRaysCount();
+        shadowFactor(tracer, light, 0);
+        assertEquals(2, tracer.getShadowRaysCount() - before, "TC11: sqrtBeamNum 1 must trace 2 shadow rays");
+        // TC12: sqrtBeamNum below 1 is rejected
+        assertThrows(IllegalArgumentException.class, () -> tracer.setSqrtBeamNum(0), "TC12: sqrtBeamNum 0 must be rejected");
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#calcSoftShadows} with adaptive sampling: the outline first,
+     * the whole grid only where the outline's rays disagree.
+     */
+    @Test
+    void testCalcSoftShadowsAdaptive() {
+        PointLight light = squareLight();
+        double[] edges = { -5.5, 5.5, 1.3 }; // lit, hidden, penumbra
+        double[] factors = new double[edges.length];
+        long[] rays = new long[edges.length];
+        for (int e = 0; e < edges.length; ++e) {
+            RayTracerBasic adaptive = softTracer(9, halfPlane(edges[e], 50, new Material()));
+            adaptive.setAdaptiveSoftShadows(true);
+            long before = adaptive.getShadowRaysCount();
+            factors[e] = shadowFactor(adaptive, light, 3);
+            rays[e] = adaptive.getShadowRaysCount() - before;
+        }
+        // ===== Equivalence Partitions Tests =====
+        // TC01: fully lit: 1 from the centre and the 32 outline rays
+        assertEquals(1.0, factors[0], 0, "TC01: a fully visible light must give 1");
+        assertEquals(33, rays[0], "TC01: a fully visible light must cost only the outline and the centre");
+        // TC02: fully hidden: 0 from the centre and the 32 outline rays
+        assertEquals(0.0, factors[1], 0, "TC02: a fully hidden light must give 0");
+        assertEquals(33, rays[1], "TC02: a fully hidden light must cost only the outline and the centre");
+        // TC03: penumbra: the whole grid, and exactly the full grid's factor for the same pixel
+        assertEquals(82, rays[2], "TC03: a partly hidden light must be sampled in full");
+        assertEquals(shadowFactor(softTracer(9, halfPlane(1.3, 50, new Material())), light, 3), factors[2], 0,
+                "TC03: adaptive sampling must give the full grid's factor in the penumbra");
+        // ===== Boundary Values Tests =====
+        // TC11: a uniform transparent sheet (all rays 0.5) is not "all 1 or all 0": the whole grid, 0.5
+        RayTracerBasic sheet = softTracer(9, halfPlane(500, 50, new Material().setKt(0.5)));
+        sheet.setAdaptiveSoftShadows(true);
+        long before = sheet.getShadowRaysCount();
+        assertEquals(0.5, shadowFactor(sheet, light, 0), 1e-12, "TC11: a transparent sheet must let half through");
+        assertEquals(82, sheet.getShadowRaysCount() - before, "TC11: partial transparency must be sampled in full");
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Soft-shadow pictures: a sphere over a floor, lit from above by a square light of edge 20 beside
+    // it; the camera looks straight down (floor x from -60 to 60 over 80 columns). Along the middle row
+    // the sphere's silhouette ends at column 61, its umbra at column 69 and its penumbra at column 78.
+    // ---------------------------------------------------------------------------------------------
+
+    private static final int PICTURE_SIZE = 80;
+    private static final Path PICTURE_FOLDER = Path.of("target", "test-images", "soft-shadows");
+
+    /** Renders the sphere's shadow on the floor (soft or hard) and returns the image. */
+    private static ImageWriter renderShadow(String name, boolean soft, int threads, long seed) {
+        Scene scene = new Scene("soft shadow picture");
+        scene.geometries.add(floor(new Material().setKd(1), Color.BLACK),
+                new Sphere(new Point3D(20, 0, 40), 10).setMaterial(new Material().setKd(1)));
+        scene.lights.add(new PointLight(new Color(200, 200, 200), new Point3D(0, 0, 100)).setEdgesSize(20)
+                .setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
+        ImageWriter image = new ImageWriter(name, PICTURE_SIZE, PICTURE_SIZE, PICTURE_FOLDER);
+        Render render = new Render().setImageWriter(image)
+                .setCamera(new Camera(new Point3D(0, 0, 1000), DOWN, new Vector(0, 1, 0))
+                        .setVpSize(120, 120).setVpDistance(1000))
+                .setRayTracer(new RayTracerBasic(scene))
+                .setSoftShadows(soft).setSeed(seed).setMultithreading(threads);
+        render.renderImage();
+        render.writeToImage();
+        return image;
+    }
+
+    /** The grey level of a pixel (the floor and the sphere are grey). */
+    private static int grey(ImageWriter image, int x, int y) {
+        return image.getPixel(x, y).getRed();
+    }
+
+    /** Asserts two images are identical pixel for pixel. */
+    private static void assertSameImage(ImageWriter expected, ImageWriter actual, String message) {
+        for (int y = 0; y < PICTURE_SIZE; ++y)
+            for (int x = 0; x < PICTURE_SIZE; ++x)
+                assertEquals(expected.getPixel(x, y), actual.getPixel(x, y), message + " at (" + x + ", " + y + ")");
+    }
+
+    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: a soft shadow has a penumbra. */
+    @Test
+    void testSoftShadowPicture() {
+        ImageWriter hard = renderShadow("hard", false, 0, RayTracerBase.DEFAULT_SEED);
+        ImageWriter soft = renderShadow("soft", true, 0, RayTracerBase.DEFAULT_SEED);
+        int row = PICTURE_SIZE / 2;
+        // from the sphere's silhouette to the picture's right edge (lit floor), across the shadow's border
+        int lit = grey(hard, PICTURE_SIZE - 1, row);
+        int shadow = grey(hard, 64, row);
+        int hardBetween = 0;
+        int softBetween = 0;
+        for (int x = 62; x < PICTURE_SIZE; ++x) {
+            if (grey(hard, x, row) > shadow + 10 && grey(hard, x, row) < lit - 40)
+                ++hardBetween;
+            if (grey(soft, x, row) > shadow + 10 && grey(soft, x, row) < lit - 40)
+                ++softBetween;
+        }
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the hard shadow is dark under lit floor (0 in the shadow, the floor lit ~200 around it)
+        assertTrue(lit > 150 && shadow == 0, "TC01: the hard render must show a black shadow on a lit floor, got "
+                + shadow + " and " + lit);
+        // TC02: across the border the hard render jumps: no pixel between shadow and light
+        assertEquals(0, hardBetween, "TC02: a hard shadow must have no penumbra");
+        // TC03: the soft render has a penumbra of several intermediate grey levels
+        assertTrue(softBetween >= 5, "TC03: a soft shadow must have a penumbra, found " + softBetween + " pixels");
+        // ===== Boundary Values Tests =====
+        // TC11: far from the sphere the soft render equals the hard one (the whole light is seen)
+        assertEquals(grey(hard, 0, 0), grey(soft, 0, 0), "TC11: a fully lit corner must not change");
+    }
+
+    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: soft-shadow pictures are reproducible. */
+    @Test
+    void testSoftShadowPictureDeterministic() {
+        ImageWriter oneThread = renderShadow("soft-1", true, 1, 7);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 1 and 2 threads render the same picture
+        assertSameImage(oneThread, renderShadow("soft-2", true, 2, 7), "TC01: 1 and 2 threads differ");
+        // TC02: the same seed renders the same picture twice
+        assertSameImage(oneThread, renderShadow("soft-1-again", true, 1, 7), "TC02: the same seed gave another picture");
+        // ===== Boundary Values Tests =====
+        // TC11: another seed moves the penumbra's noise
+        ImageWriter otherSeed = renderShadow("soft-other-seed", true, 1, 8);
+        int differing = 0;
+        for (int x = 0; x < PICTURE_SIZE; ++x)
+            if (!oneThread.getPixel(x, PICTURE_SIZE / 2).equals(otherSeed.getPixel(x, PICTURE_SIZE / 2)))
+                ++differing;
+        assertNotEquals(0, differing, "TC11: another seed must change the penumbra's noise");
     }
 }

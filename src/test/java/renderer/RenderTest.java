@@ -1,9 +1,12 @@
 package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -260,5 +263,251 @@ class RenderTest {
         // TC11: a grid interval of 0 is rejected
         assertThrows(IllegalArgumentException.class, () -> render.printGrid(0, Color.BLACK),
                 "TC11: a zero grid interval must be rejected");
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Sampling settings and anti-aliasing
+    // ---------------------------------------------------------------------------------------------
+
+    /** The size of the anti-aliasing pictures: 40×40 pixels of 5×5 units on the view plane. */
+    private static final int AA_SIZE = 40;
+    /** The emission of the anti-aliasing sphere. */
+    private static final Color SPHERE_EMISSION = new Color(200, 100, 50);
+    /** The sphere's colour as written to the picture. */
+    private static final java.awt.Color SPHERE_RGB = new java.awt.Color(200, 100, 50);
+    /**
+     * The radius on the view plane of the sphere's silhouette: a sphere of radius 50 at distance
+     * 1000 from the camera, seen on a view plane at 1000: 50·1000/√(1000² − 50²) ≈ 50.063.
+     */
+    private static final double SILHOUETTE = 50 * 1000 / Math.sqrt(1000 * 1000 - 50 * 50);
+
+    /** A sphere of radius 50 at the origin with emission (200, 100, 50), black background, no lights. */
+    private static Scene sphereScene(String name) {
+        Scene scene = new Scene(name);
+        scene.geometries.add(new Sphere(new Point3D(0, 0, 0), 50).setEmission(SPHERE_EMISSION));
+        return scene;
+    }
+
+    /** Renders the sphere scene at 40×40 with k × k rays per pixel, writing it under target/. */
+    private static Render renderAntiAliased(String name, RayTracerBase tracer, int k, int threads) {
+        Render render = new Render().setImageWriter(new ImageWriter(name, AA_SIZE, AA_SIZE, FOLDER))
+                .setCamera(topCamera()).setRayTracer(tracer).setMultithreading(threads).setAntiAliasing(k);
+        render.renderImage();
+        render.writeToImage();
+        return render;
+    }
+
+    /** The smallest distance on the view plane from the camera axis to pixel (x, y)'s square. */
+    private static double nearestDistance(int x, int y) {
+        double pixel = 200.0 / AA_SIZE;
+        double dx = Math.max(0, Math.max((x - AA_SIZE / 2) * pixel, -(x + 1 - AA_SIZE / 2) * pixel));
+        double dy = Math.max(0, Math.max((y - AA_SIZE / 2) * pixel, -(y + 1 - AA_SIZE / 2) * pixel));
+        return Math.sqrt(dx * dx + dy * dy);
+    }
+
+    /** The largest distance on the view plane from the camera axis to pixel (x, y)'s square. */
+    private static double farthestDistance(int x, int y) {
+        double pixel = 200.0 / AA_SIZE;
+        double dx = Math.max(Math.abs((x - AA_SIZE / 2) * pixel), Math.abs((x + 1 - AA_SIZE / 2) * pixel));
+        double dy = Math.max(Math.abs((y - AA_SIZE / 2) * pixel), Math.abs((y + 1 - AA_SIZE / 2) * pixel));
+        return Math.sqrt(dx * dx + dy * dy);
+    }
+
+    /** Whether a pixel's colour lies strictly between the black background and the sphere's colour. */
+    private static boolean intermediate(java.awt.Color c) {
+        return c.getRed() > 0 && c.getRed() < 200;
+    }
+
+    /** Asserts that two renders wrote the same picture, pixel for pixel. */
+    private static void assertSamePicture(Render expected, Render actual, String message) {
+        for (int y = 0; y < AA_SIZE; ++y)
+            for (int x = 0; x < AA_SIZE; ++x)
+                assertEquals(expected.getImageWriter().getPixel(x, y), actual.getImageWriter().getPixel(x, y),
+                        message + " at pixel (" + x + ", " + y + ")");
+    }
+
+    /** The number of silhouette pixels in which two renders differ. */
+    private static int countDifferent(Render a, Render b) {
+        int count = 0;
+        for (int y = 0; y < AA_SIZE; ++y)
+            for (int x = 0; x < AA_SIZE; ++x)
+                if (!a.getImageWriter().getPixel(x, y).equals(b.getImageWriter().getPixel(x, y)))
+                    ++count;
+        return count;
+    }
+
+    /**
+     * Test method for {@link Render#setSoftShadows(boolean)}, {@link Render#setSqrtBeamNum(int)},
+     * {@link Render#setAdaptiveSoftShadows(boolean)} and {@link Render#setSeed(long)}: forwarded to the ray tracer.
+     */
+    @Test
+    void testForwardingSetters() {
+        RayTracerBase tracer = new RayTracerBasic(floorScene("forward"));
+        Render render = new Render().setRayTracer(tracer);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: each setter returns the render and changes the ray tracer's getter
+        assertSame(render, render.setSoftShadows(true), "TC01: setSoftShadows must return the render");
+        assertTrue(tracer.isSoftShadows(), "TC01: soft shadows must be on in the ray tracer");
+        assertSame(render, render.setSqrtBeamNum(5), "TC01: setSqrtBeamNum must return the render");
+        assertEquals(5, tracer.getSqrtBeamNum(), "TC01: sqrtBeamNum must be 5 in the ray tracer");
+        assertEquals(5, tracer.getBeamGrid().getSqrtSamples(), "TC01: the ray tracer's beam grid must be 5 × 5");
+        assertSame(render, render.setAdaptiveSoftShadows(true), "TC01: setAdaptiveSoftShadows must return the render");
+        assertTrue(tracer.isAdaptiveSoftShadows(), "TC01: adaptive soft shadows must be on in the ray tracer");
+        assertSame(render, render.setSeed(77), "TC01: setSeed must return the render");
+        assertEquals(77, tracer.getSeed(), "TC01: the seed must be 77 in the ray tracer");
+        // TC02: turning the flags off again is forwarded too
+        render.setSoftShadows(false).setAdaptiveSoftShadows(false);
+        assertFalse(tracer.isSoftShadows(), "TC02: soft shadows must be off again in the ray tracer");
+        assertFalse(tracer.isAdaptiveSoftShadows(), "TC02: adaptive soft shadows must be off again");
+        // TC03: a bad sqrtBeamNum (-2) is rejected by the ray tracer through the render
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> render.setSqrtBeamNum(-2),
+                "TC03: sqrtBeamNum -2 must be rejected");
+        assertMessage(e, "sqrtBeamNum", "TC03");
+        assertEquals(5, tracer.getSqrtBeamNum(), "TC03: a rejected sqrtBeamNum must leave 5");
+
+        // ===== Boundary Values Tests =====
+        // TC11: before setRayTracer every forwarding setter throws MissingResourceException naming the ray tracer
+        Render empty = new Render();
+        MissingResourceException m = assertThrows(MissingResourceException.class, () -> empty.setSoftShadows(true),
+                "TC11: setSoftShadows without a ray tracer must fail");
+        assertTrue(m.getMessage().contains("ray tracer"), "TC11: the message must name the ray tracer");
+        assertThrows(MissingResourceException.class, () -> empty.setSqrtBeamNum(3),
+                "TC11: setSqrtBeamNum without a ray tracer must fail");
+        assertThrows(MissingResourceException.class, () -> empty.setAdaptiveSoftShadows(true),
+                "TC11: setAdaptiveSoftShadows without a ray tracer must fail");
+        assertThrows(MissingResourceException.class, () -> empty.setSeed(1),
+                "TC11: setSeed without a ray tracer must fail");
+        // TC12: sqrtBeamNum 1 is forwarded
+        render.setSqrtBeamNum(1);
+        assertEquals(1, tracer.getSqrtBeamNum(), "TC12: sqrtBeamNum 1 must be forwarded");
+    }
+
+    /** Test method for {@link Render#setAntiAliasing(int)} and {@link Render#getAntiAliasing()}. */
+    @Test
+    void testSetAntiAliasing() {
+        Render render = new Render();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the default is 1 (one ray through each pixel's centre)
+        assertEquals(1, render.getAntiAliasing(), "TC01: anti-aliasing must default to 1");
+        // TC02: k = 4 is kept, and the setter returns the render
+        assertSame(render, render.setAntiAliasing(4), "TC02: setAntiAliasing must return the render");
+        assertEquals(4, render.getAntiAliasing(), "TC02: anti-aliasing must be 4");
+        // TC03: a negative k (-2) is rejected and leaves 4
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> render.setAntiAliasing(-2),
+                "TC03: anti-aliasing -2 must be rejected");
+        assertMessage(e, "anti-aliasing", "TC03");
+        assertEquals(4, render.getAntiAliasing(), "TC03: a rejected anti-aliasing must leave 4");
+
+        // ===== Boundary Values Tests =====
+        // TC11: k = 0 is rejected
+        e = assertThrows(IllegalArgumentException.class, () -> render.setAntiAliasing(0),
+                "TC11: anti-aliasing 0 must be rejected");
+        assertMessage(e, "anti-aliasing", "TC11");
+        // TC12: k = 1 is accepted and turns anti-aliasing off again
+        assertSame(render, render.setAntiAliasing(1), "TC12: setAntiAliasing(1) must return the render");
+        assertEquals(1, render.getAntiAliasing(), "TC12: anti-aliasing must be 1 again");
+    }
+
+    /** Test method for {@link Render#setAntiAliasing(int)}: k² rays per pixel smooth the silhouette only. */
+    @Test
+    void testAntiAliasingPicture() {
+        RayTracerBase plainTracer = new RayTracerBasic(sphereScene("aliased"));
+        Render plain = renderAntiAliased("antiAliasing1", plainTracer, 1, 2);
+        RayTracerBase smoothTracer = new RayTracerBasic(sphereScene("anti-aliased"));
+        Render smooth = renderAntiAliased("antiAliasing3", smoothTracer, 3, 2);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: primary rays: 40·40 = 1600 with k = 1, 9·1600 = 14400 with k = 3
+        assertEquals(AA_SIZE * AA_SIZE, plainTracer.getPrimaryRaysCount(), "TC01: k = 1 must trace one ray a pixel");
+        assertEquals(9 * AA_SIZE * AA_SIZE, smoothTracer.getPrimaryRaysCount(), "TC01: k = 3 must trace 9 rays a pixel");
+        // TC02: with k = 1 every pixel is exactly black or exactly the sphere's colour
+        for (int y = 0; y < AA_SIZE; ++y)
+            for (int x = 0; x < AA_SIZE; ++x) {
+                java.awt.Color c = plain.getImageWriter().getPixel(x, y);
+                assertTrue(c.equals(java.awt.Color.BLACK) || c.equals(SPHERE_RGB),
+                        "TC02: pixel (" + x + ", " + y + ") must be black or the sphere's colour without AA, got " + c);
+            }
+        // TC03: with k = 3 every pixel is m/9 of the sphere's colour (m rays of 9 hit it, truncated to an integer)
+        int intermediates = 0;
+        for (int y = 0; y < AA_SIZE; ++y)
+            for (int x = 0; x < AA_SIZE; ++x) {
+                java.awt.Color c = smooth.getImageWriter().getPixel(x, y);
+                boolean found = false;
+                for (int m = 0; m <= 9 && !found; ++m)
+                    found = c.getRed() == (int) (200.0 * m / 9) && c.getGreen() == (int) (100.0 * m / 9)
+                            && c.getBlue() == (int) (50.0 * m / 9);
+                assertTrue(found, "TC03: pixel (" + x + ", " + y + ") must be the average of 9 rays, got " + c);
+                if (intermediate(c)) {
+                    ++intermediates;
+                    // TC04: intermediate levels only where the pixel straddles the silhouette
+                    assertTrue(nearestDistance(x, y) <= SILHOUETTE && farthestDistance(x, y) >= SILHOUETTE,
+                            "TC04: pixel (" + x + ", " + y + ") off the silhouette must not be blended");
+                }
+            }
+        // TC05: the silhouette (about 2π·10 ≈ 63 pixels long) shows many intermediate levels with AA
+        assertTrue(intermediates >= 30, "TC05: the anti-aliased silhouette must blend, got " + intermediates + " pixels");
+
+        // ===== Boundary Values Tests =====
+        // TC11: pixels wholly inside the silhouette keep the sphere's exact colour, and pixels wholly
+        // outside it keep the exact black background, with and without AA
+        int inside = 0;
+        int outside = 0;
+        for (int y = 0; y < AA_SIZE; ++y)
+            for (int x = 0; x < AA_SIZE; ++x)
+                if (farthestDistance(x, y) < SILHOUETTE - 0.5) {
+                    ++inside;
+                    assertEquals(SPHERE_RGB, smooth.getImageWriter().getPixel(x, y),
+                            "TC11: inner pixel (" + x + ", " + y + ") must keep the sphere's colour with AA");
+                    assertEquals(SPHERE_RGB, plain.getImageWriter().getPixel(x, y),
+                            "TC11: inner pixel (" + x + ", " + y + ") must keep the sphere's colour without AA");
+                } else if (nearestDistance(x, y) > SILHOUETTE + 0.5) {
+                    ++outside;
+                    assertEquals(java.awt.Color.BLACK, smooth.getImageWriter().getPixel(x, y),
+                            "TC11: outer pixel (" + x + ", " + y + ") must keep the background with AA");
+                    assertEquals(java.awt.Color.BLACK, plain.getImageWriter().getPixel(x, y),
+                            "TC11: outer pixel (" + x + ", " + y + ") must keep the background without AA");
+                }
+        assertTrue(inside > 200 && outside > 1000,
+                "TC11: the test must cover the inside and the far background (" + inside + ", " + outside + ")");
+        // TC12: the exact centre pixel (20, 20) and corner (0, 0)
+        assertEquals(SPHERE_RGB, smooth.getImageWriter().getPixel(20, 20), "TC12: the centre must be the sphere");
+        assertEquals(java.awt.Color.BLACK, smooth.getImageWriter().getPixel(0, 0), "TC12: the corner must be black");
+    }
+
+    /**
+     * Test method for {@link Render#setAntiAliasing(int)} with {@link Render#setMultithreading(int)} and
+     * {@link Render#setSeed(long)}: anti-aliased pictures are reproducible.
+     */
+    @Test
+    void testAntiAliasingReproducible() {
+        Render oneThread = renderAntiAliased("antiAliasingThreads1", new RayTracerBasic(sphereScene("aa1")), 3, 1);
+        Render twoThreads = renderAntiAliased("antiAliasingThreads2", new RayTracerBasic(sphereScene("aa2")), 3, 2);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 1 thread and 2 threads give the same anti-aliased picture, pixel for pixel
+        assertSamePicture(oneThread, twoThreads, "TC01: 1 and 2 threads must give the same picture");
+        // TC02: the same seed (7) gives the same picture twice
+        Render seeded = renderAntiAliased("antiAliasingSeed7a",
+                new RayTracerBasic(sphereScene("seed 7")).setSeed(7), 3, 2);
+        Render seededAgain = renderAntiAliased("antiAliasingSeed7b",
+                new RayTracerBasic(sphereScene("seed 7 again")).setSeed(7), 3, 2);
+        assertSamePicture(seeded, seededAgain, "TC02: the same seed must give the same picture");
+        // TC03: another seed (8) moves the jittered rays: some silhouette pixels change
+        Render reseeded = renderAntiAliased("antiAliasingSeed8",
+                new RayTracerBasic(sphereScene("seed 8")).setSeed(8), 3, 2);
+        assertTrue(countDifferent(seeded, reseeded) > 0, "TC03: another seed must change some silhouette pixels");
+        // TC04: the default seed and seed 7 differ too
+        assertTrue(countDifferent(oneThread, seeded) > 0, "TC04: the default seed and seed 7 must differ");
+
+        // ===== Boundary Values Tests =====
+        // TC11: seed set through the render (forwarded) gives the same picture as seed set on the tracer
+        RayTracerBase tracer = new RayTracerBasic(sphereScene("seed 7 forwarded"));
+        Render forwarded = new Render().setImageWriter(new ImageWriter("antiAliasingSeed7c", AA_SIZE, AA_SIZE, FOLDER))
+                .setCamera(topCamera()).setRayTracer(tracer).setSeed(7).setAntiAliasing(3).setMultithreading(1);
+        forwarded.renderImage();
+        forwarded.writeToImage();
+        assertSamePicture(seeded, forwarded, "TC11: setSeed on the render must act as on the ray tracer");
     }
 }

@@ -1,9 +1,11 @@
 package testutil;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import primitives.Color;
+import primitives.Vector;
 
 /** Assertion helpers shared by the unit tests. */
 public final class TestAssertions {
@@ -50,5 +52,25 @@ public final class TestAssertions {
      */
     public static void assertColor(Color expected, Color actual, String message) {
         assertColor(expected.getR(), expected.getG(), expected.getB(), actual, message);
+    }
+
+    /**
+     * Asserts that U and V place a square facing along a normal: both unit, orthogonal to each other
+     * and to the normal, so |(U × V) · normal| = 1.
+     *
+     * @param u      the square's first side
+     * @param v      the square's second side
+     * @param normal the unit normal the square must face
+     * @param tc     the test-case label, named in the failure messages
+     */
+    public static void assertSquareAxes(Vector u, Vector v, Vector normal, String tc) {
+        assertNotNull(u, tc + ": U must not be null");
+        assertNotNull(v, tc + ": V must not be null");
+        assertEquals(1, u.length(), 1e-10, tc + ": U must be unit");
+        assertEquals(1, v.length(), 1e-10, tc + ": V must be unit");
+        assertEquals(0, u.dotProduct(v), 1e-10, tc + ": U·V must be 0");
+        assertEquals(0, u.dotProduct(normal), 1e-10, tc + ": U·normal must be 0");
+        assertEquals(0, v.dotProduct(normal), 1e-10, tc + ": V·normal must be 0");
+        assertEquals(1, Math.abs(u.crossProduct(v).dotProduct(normal)), 1e-10, tc + ": |(U×V)·normal| must be 1");
     }
 }

@@ -1,0 +1,171 @@
+package renderer;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
+
+import org.junit.jupiter.api.Test;
+
+import scene.Scene;
+
+/**
+ * Unit tests for {@link RayTracerBase}: the sampling settings, the seeded per-pixel streams and the
+ * ray counters, tested through {@link RayTracerBasic}.
+ */
+class RayTracerBaseTest {
+
+    private static RayTracerBase tracer() {
+        return new RayTracerBasic(new Scene("t"));
+    }
+
+    /** Test method for {@link RayTracerBase#RayTracerBase(Scene)}: the defaults and a null scene. */
+    @Test
+    void testDefaults() {
+        RayTracerBase tracer = tracer();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: sqrtBeamNum 9 (= DEFAULT_SQRT_BEAM_NUM), a 9 × 9 beam grid
+        assertEquals(9, RayTracerBase.DEFAULT_SQRT_BEAM_NUM, "TC01: the default sqrtBeamNum must be 9");
+        assertEquals(RayTracerBase.DEFAULT_SQRT_BEAM_NUM, tracer.getSqrtBeamNum(), "TC01: wrong default sqrtBeamNum");
+        assertEquals(9, tracer.getBeamGrid().getSqrtSamples(), "TC01: the default beam grid must be 9 × 9");
+        assertEquals(81, tracer.getBeamGrid().getSamplesCount(), "TC01: the default beam grid must have 81 cells");
+        // TC02: soft shadows and adaptive soft shadows are off
+        assertFalse(tracer.isSoftShadows(), "TC02: soft shadows must be off by default");
+        assertFalse(tracer.isAdaptiveSoftShadows(), "TC02: adaptive soft shadows must be off by default");
+        // TC03: the seed is DEFAULT_SEED
+        assertEquals(RayTracerBase.DEFAULT_SEED, tracer.getSeed(), "TC03: wrong default seed");
+        // TC04: the ray counters start at 0
+        assertEquals(0, tracer.getPrimaryRaysCount(), "TC04: the primary ray count must start at 0");
+        assertEquals(0, tracer.getShadowRaysCount(), "TC04: the shadow ray count must start at 0");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a null scene is rejected with a message naming the scene
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new RayTracerBasic(null),
+                "TC11: a null scene must be rejected");
+        assertMessage(e, "scene", "TC11");
+    }
+
+    /** Test method for {@link RayTracerBase#setSqrtBeamNum(int)} and {@link RayTracerBase#getBeamGrid()}. */
+    @Test
+    void testSetSqrtBeamNum() {
+        RayTracerBase tracer = tracer();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: sqrtBeamNum 4: the setter returns the tracer, the getter gives 4 and the grid is 4 × 4
+        assertSame(tracer, tracer.setSqrtBeamNum(4), "TC01: setSqrtBeamNum must return the same ray tracer");
+        assertEquals(4, tracer.getSqrtBeamNum(), "TC01: sqrtBeamNum must be 4");
+        assertEquals(4, tracer.getBeamGrid().getSqrtSamples(), "TC01: the beam grid must follow sqrtBeamNum (4)");
+        assertEquals(16, tracer.getBeamGrid().getSamplesCount(), "TC01: the beam grid must have 16 cells");
+        assertEquals(12, tracer.getBeamGrid().getOutlineCount(), "TC01: the beam grid must have 12 border cells");
+        // TC02: a negative sqrtBeamNum (-3) is rejected, and the settings stay as they were
+        JitteredGrid before = tracer.getBeamGrid();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> tracer.setSqrtBeamNum(-3),
+                "TC02: sqrtBeamNum -3 must be rejected");
+        assertMessage(e, "sqrtBeamNum", "TC02");
+        assertEquals(4, tracer.getSqrtBeamNum(), "TC02: a rejected sqrtBeamNum must leave 4");
+        assertSame(before, tracer.getBeamGrid(), "TC02: a rejected sqrtBeamNum must leave the grid");
+
+        // ===== Boundary Values Tests =====
+        // TC11: sqrtBeamNum 0 is rejected
+        e = assertThrows(IllegalArgumentException.class, () -> tracer.setSqrtBeamNum(0),
+                "TC11: sqrtBeamNum 0 must be rejected");
+        assertMessage(e, "sqrtBeamNum", "TC11");
+        assertEquals(4, tracer.getSqrtBeamNum(), "TC11: a rejected sqrtBeamNum must leave 4");
+        // TC12: sqrtBeamNum 1 is accepted: a single cell
+        assertSame(tracer, tracer.setSqrtBeamNum(1), "TC12: setSqrtBeamNum(1) must return the same ray tracer");
+        assertEquals(1, tracer.getSqrtBeamNum(), "TC12: sqrtBeamNum must be 1");
+        assertEquals(1, tracer.getBeamGrid().getSamplesCount(), "TC12: the beam grid must have 1 cell");
+    }
+
+    /**
+     * Test method for {@link RayTracerBase#setSoftShadows(boolean)},
+     * {@link RayTracerBase#setAdaptiveSoftShadows(boolean)} and {@link RayTracerBase#setSeed(long)}.
+     */
+    @Test
+    void testFlagsAndSeed() {
+        RayTracerBase tracer = tracer();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: soft shadows on, then off again
+        assertSame(tracer, tracer.setSoftShadows(true), "TC01: setSoftShadows must return the same ray tracer");
+        assertTrue(tracer.isSoftShadows(), "TC01: soft shadows must be on");
+        tracer.setSoftShadows(false);
+        assertFalse(tracer.isSoftShadows(), "TC01: soft shadows must be off again");
+        // TC02: adaptive soft shadows on, then off again, independent of soft shadows
+        assertSame(tracer, tracer.setAdaptiveSoftShadows(true),
+                "TC02: setAdaptiveSoftShadows must return the same ray tracer");
+        assertTrue(tracer.isAdaptiveSoftShadows(), "TC02: adaptive soft shadows must be on");
+        assertFalse(tracer.isSoftShadows(), "TC02: adaptive must not turn soft shadows on");
+        tracer.setAdaptiveSoftShadows(false);
+        assertFalse(tracer.isAdaptiveSoftShadows(), "TC02: adaptive soft shadows must be off again");
+        // TC03: the seed 1234
+        assertSame(tracer, tracer.setSeed(1234), "TC03: setSeed must return the same ray tracer");
+        assertEquals(1234, tracer.getSeed(), "TC03: the seed must be 1234");
+
+        // ===== Boundary Values Tests =====
+        // TC11: seeds 0, -1, Long.MIN_VALUE and Long.MAX_VALUE are all accepted as they are
+        for (long seed : new long[] { 0, -1, Long.MIN_VALUE, Long.MAX_VALUE }) {
+            tracer.setSeed(seed);
+            assertEquals(seed, tracer.getSeed(), "TC11: the seed must be " + seed);
+        }
+    }
+
+    /**
+     * Test method for {@link RayTracerBase#startPixel(int, int)}: each pixel's stream comes from the
+     * seed and the pixel's position only.
+     */
+    @Test
+    void testPixelStreams() {
+        RayTracerBase tracer = tracer();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the same pixel twice gives the same stream
+        long first = tracer.startPixel(3, 4).random.nextLong();
+        assertEquals(first, tracer.startPixel(3, 4).random.nextLong(), "TC01: a pixel must restart the same stream");
+        // TC02: another tracer with the same seed gives the same stream for the pixel
+        assertEquals(first, tracer().startPixel(3, 4).random.nextLong(),
+                "TC02: the same seed and pixel must give the same stream");
+        // TC03: swapped coordinates and neighbouring pixels give other streams
+        assertNotEquals(first, tracer.startPixel(4, 3).random.nextLong(), "TC03: pixel (4, 3) must differ from (3, 4)");
+        assertNotEquals(first, tracer.startPixel(3, 5).random.nextLong(), "TC03: pixel (3, 5) must differ from (3, 4)");
+        assertNotEquals(first, tracer.startPixel(2, 4).random.nextLong(), "TC03: pixel (2, 4) must differ from (3, 4)");
+        // TC04: another seed gives another stream for the same pixel
+        assertNotEquals(first, tracer().setSeed(99).startPixel(3, 4).random.nextLong(),
+                "TC04: another seed must give another stream");
+        // TC05: the state returned is the calling thread's state
+        assertSame(tracer.threadState(), tracer.startPixel(1, 1), "TC05: startPixel must return the thread's state");
+
+        // ===== Boundary Values Tests =====
+        // TC11: pixel (0, 0) with seed 0 still gives a stream that differs from pixel (0, 1) and (1, 0)
+        RayTracerBase zero = tracer().setSeed(0);
+        long origin = zero.startPixel(0, 0).random.nextLong();
+        assertNotEquals(origin, zero.startPixel(0, 1).random.nextLong(), "TC11: pixel (0, 1) must differ from (0, 0)");
+        assertNotEquals(origin, zero.startPixel(1, 0).random.nextLong(), "TC11: pixel (1, 0) must differ from (0, 0)");
+    }
+
+    /** Test method for {@link RayTracerBase#getPrimaryRaysCount()}: the counts of all threads are added up. */
+    @Test
+    void testRayCounters() throws InterruptedException {
+        RayTracerBase tracer = tracer();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 5 rays counted on this thread and 7 on another give 12
+        tracer.threadState().primaryRays += 5;
+        Thread other = new Thread(() -> {
+            tracer.threadState().primaryRays += 7;
+            tracer.threadState().shadowRays += 2;
+        });
+        other.start();
+        other.join();
+        assertEquals(12, tracer.getPrimaryRaysCount(), "TC01: the primary ray counts of both threads must add up");
+        assertEquals(2, tracer.getShadowRaysCount(), "TC01: the shadow ray count must be the other thread's 2");
+
+        // ===== Boundary Values Tests =====
+        // TC11: another tracer's counters stay at 0
+        assertEquals(0, tracer().getPrimaryRaysCount(), "TC11: a new tracer's count must be 0");
+    }
+}
