@@ -17,6 +17,9 @@ import static primitives.Util.requirePositive;
  * the top cap lies {@code height} along the axis direction.
  */
 public class Cylinder extends Tube {
+    /** How far past radius² a squared distance may be and still be on a cap (isZero's tolerance). */
+    private static final double CAP_TOLERANCE = 1e-10;
+
     private final double height;
 
     /**
@@ -34,6 +37,29 @@ public class Cylinder extends Tube {
     /** @return the height */
     public double getHeight() {
         return height;
+    }
+
+    /**
+     * The box around both caps: along each axis a cap reaches radius·sqrt(1 − a²) from its centre.
+     * The cap test accepts squared distances up to radius² + 1e-10 (the tolerance of
+     * {@link primitives.Util#isZero}), so the radius taken is sqrt(radius² + 1e-10).
+     */
+    @Override
+    double[] bounds() {
+        Point3D bottom = getAxisRay().getP0();
+        Point3D top = getAxisRay().getPoint(height);
+        Vector a = getAxisRay().getDir();
+        double[] axis = { a.getX(), a.getY(), a.getZ() };
+        double[] from = { bottom.getX(), bottom.getY(), bottom.getZ() };
+        double[] to = { top.getX(), top.getY(), top.getZ() };
+        double capRadius = Math.sqrt(getRadius() * getRadius() + CAP_TOLERANCE);
+        double[] box = new double[6];
+        for (int i = 0; i < 3; ++i) {
+            double reach = capRadius * Math.sqrt(Math.max(0, 1 - axis[i] * axis[i]));
+            box[i] = Math.min(from[i], to[i]) - reach;
+            box[3 + i] = Math.max(from[i], to[i]) + reach;
+        }
+        return box;
     }
 
     @Override

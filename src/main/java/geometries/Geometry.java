@@ -1,8 +1,11 @@
 package geometries;
 
+import java.util.List;
+
 import primitives.Color;
 import primitives.Material;
 import primitives.Point3D;
+import primitives.Ray;
 import primitives.Vector;
 
 import static primitives.Util.requireNonNull;
@@ -11,6 +14,9 @@ import static primitives.Util.requireNonNull;
  * A single body with a surface: it has an emission colour, a material and a normal at each point.
  */
 public abstract class Geometry extends Intersectable {
+    /** What {@link #nearestHit} returns when the ray misses. */
+    static final double NO_HIT = Double.POSITIVE_INFINITY;
+
     private Color emission = Color.BLACK;
     private Material material = new Material();
 
@@ -52,5 +58,73 @@ public abstract class Geometry extends Intersectable {
     public Geometry setMaterial(Material material) {
         this.material = requireNonNull(material, "material");
         return this;
+    }
+
+    // The fast path of the acceleration structure: a ray as raw doubles (origin o, unit direction d).
+    // Bodies on the hot path override these with code that allocates nothing; the defaults go
+    // through findGeoIntersections.
+
+    /**
+     * The distance to the nearest intersection ahead of a ray, within a limit.
+     *
+     * @param maxT the largest distance that counts
+     * @return the distance t in (0, maxT], or {@link #NO_HIT} when there is none
+     */
+    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz)), maxT);
+        double nearest = NO_HIT;
+        if (hits != null)
+            for (GeoPoint hit : hits)
+                nearest = Math.min(nearest, hit.point.distance(new Point3D(ox, oy, oz)));
+        return nearest;
+    }
+
+    /**
+     * The intersection list of a body a ray crosses at most once, from {@link #nearestHit}.
+     *
+     * @param ray         the ray
+     * @param maxDistance the largest distance that counts
+     * @return the one intersection, or null
+     */
+    final List<GeoPoint> singleHit(Ray ray, double maxDistance) {
+        Point3D p0 = ray.getP0();
+        Vector dir = ray.getDir();
+        double t = nearestHit(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), maxDistance);
+        return t < NO_HIT ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
+    }
+
+    /**
+     * The number of intersections ahead of a ray, within a limit.
+     *
+     * @param maxT the largest distance that counts
+     * @return the number of intersections at distances in (0, maxT]
+     */
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz)), maxT);
+        return hits == null ? 0 : hits.size();
+    }
+
+    /**
+     * The share of light that passes this body along a ray, within a limit: {@code kT} to the power
+     * of the number of intersections.
+     *
+     * @param maxT the largest distance that counts
+     * @return the transparency factor in [0, 1]
+     */
+    final double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        double kT = material.getKt();
+        if (kT == 0) // opaque: any hit blocks, no need to count them
+            return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 0 : 1;
+        int count = hitCount(ox, oy, oz, dx, dy, dz, maxT);
+        return count == 0 ? 1 : count == 1 ? kT : Math.pow(kT, count);
+    }
+
+    /**
+     * The axis-aligned box around the body.
+     *
+     * @return {minX, minY, minZ, maxX, maxY, maxZ}, or null for an unbounded body
+     */
+    double[] bounds() {
+        return null;
     }
 }

@@ -16,6 +16,12 @@ import static primitives.Util.requireNonNull;
 public class Plane extends Geometry {
     private final Point3D q0;
     private final Vector normal;
+    private final double qx;
+    private final double qy;
+    private final double qz;
+    private final double nx;
+    private final double ny;
+    private final double nz;
 
     /**
      * Creates a plane from a point on it and its normal.
@@ -26,6 +32,12 @@ public class Plane extends Geometry {
     public Plane(Point3D p0, Vector normal) {
         this.q0 = requireNonNull(p0, "plane point");
         this.normal = requireNonNull(normal, "plane normal").normalized();
+        this.qx = q0.getX();
+        this.qy = q0.getY();
+        this.qz = q0.getZ();
+        this.nx = this.normal.getX();
+        this.ny = this.normal.getY();
+        this.nz = this.normal.getZ();
     }
 
     /**
@@ -37,8 +49,8 @@ public class Plane extends Geometry {
      * @throws IllegalArgumentException when two points coincide or all three are collinear
      */
     public Plane(Point3D p1, Point3D p2, Point3D p3) {
-        this.q0 = requireNonNull(p1, "plane point p1");
-        this.normal = normalThrough(p1, requireNonNull(p2, "plane point p2"), requireNonNull(p3, "plane point p3"));
+        this(requireNonNull(p1, "plane point p1"),
+                normalThrough(p1, requireNonNull(p2, "plane point p2"), requireNonNull(p3, "plane point p3")));
     }
 
     /**
@@ -77,27 +89,31 @@ public class Plane extends Geometry {
 
     @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double t = intersectionDistance(ray);
-        return t > 0 && t <= maxDistance ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
+        return singleHit(ray, maxDistance);
+    }
+
+    @Override
+    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        double t = intersectionDistance(ox, oy, oz, dx, dy, dz);
+        return t > 0 && t <= maxT ? t : NO_HIT;
+    }
+
+    @Override
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 1 : 0;
     }
 
     /**
-     * The distance along a ray to this plane.
+     * The distance along a ray (origin o, unit direction d) to this plane.
      *
-     * @param ray the ray
      * @return the distance, or 0 when the ray is parallel to the plane or starts on it, negative when
      *         the plane is behind the ray
      */
-    double intersectionDistance(Ray ray) {
-        Point3D p0 = ray.getP0();
-        Vector dir = ray.getDir();
-        double nv = alignZero(normal.dotProduct(dir));
+    double intersectionDistance(double ox, double oy, double oz, double dx, double dy, double dz) {
+        double nv = alignZero(nx * dx + ny * dy + nz * dz);
         if (nv == 0)
             return 0;
-        double nq = normal.getX() * (q0.getX() - p0.getX())
-                + normal.getY() * (q0.getY() - p0.getY())
-                + normal.getZ() * (q0.getZ() - p0.getZ());
-        return alignZero(nq / nv);
+        return alignZero((nx * (qx - ox) + ny * (qy - oy) + nz * (qz - oz)) / nv);
     }
 
     @Override

@@ -24,6 +24,8 @@ public class Polygon extends Geometry {
 
     /** Inward unit normals of the edges within the plane, three doubles per edge. */
     private final double[] edgeNormals;
+    /** The vertices' coordinates, three doubles per vertex. */
+    private final double[] vertexCoordinates;
     /** The largest edge length: the scale of the edge tolerance. */
     private final double size;
 
@@ -49,6 +51,12 @@ public class Polygon extends Geometry {
         requireConvex(edges, normal);
         this.plane = new Plane(vertices[0], normal);
         this.edgeNormals = inwardEdgeNormals(edges, normal);
+        this.vertexCoordinates = new double[3 * vertices.length];
+        for (int i = 0; i < vertices.length; ++i) {
+            vertexCoordinates[3 * i] = vertices[i].getX();
+            vertexCoordinates[3 * i + 1] = vertices[i].getY();
+            vertexCoordinates[3 * i + 2] = vertices[i].getZ();
+        }
     }
 
     private static Vector[] edgesOf(Point3D[] vertices) {
@@ -140,24 +148,60 @@ public class Polygon extends Geometry {
 
     @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double t = plane.intersectionDistance(ray);
-        if (!(t > 0 && t <= maxDistance))
-            return null;
-        Point3D p0 = ray.getP0();
-        Vector dir = ray.getDir();
-        double px = p0.getX() + t * dir.getX();
-        double py = p0.getY() + t * dir.getY();
-        double pz = p0.getZ() + t * dir.getZ();
+        return singleHit(ray, maxDistance);
+    }
+
+    @Override
+    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        double t = plane.intersectionDistance(ox, oy, oz, dx, dy, dz);
+        if (!(t > 0 && t <= maxT))
+            return NO_HIT;
+        double px = ox + t * dx;
+        double py = oy + t * dy;
+        double pz = oz + t * dz;
         double tolerance = -EDGE_TOLERANCE * size;
-        for (int i = 0; i < vertices.size(); ++i) {
-            Point3D v = vertices.get(i);
-            double inside = (px - v.getX()) * edgeNormals[3 * i]
-                    + (py - v.getY()) * edgeNormals[3 * i + 1]
-                    + (pz - v.getZ()) * edgeNormals[3 * i + 2];
+        for (int i = 0; i < vertexCoordinates.length; i += 3) {
+            double inside = (px - vertexCoordinates[i]) * edgeNormals[i]
+                    + (py - vertexCoordinates[i + 1]) * edgeNormals[i + 1]
+                    + (pz - vertexCoordinates[i + 2]) * edgeNormals[i + 2];
             if (inside < tolerance)
-                return null;
+                return NO_HIT;
         }
-        return List.of(new GeoPoint(this, new Point3D(px, py, pz)));
+        return t;
+    }
+
+    @Override
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 1 : 0;
+    }
+
+    /**
+     * The box around every point {@link #nearestHit} accepts: the polygon grown by the edge
+     * tolerance. Its corners lie past the vertices, where the two shifted edge lines meet:
+     * v − δ·(n₁ + n₂) / (1 + n₁·n₂) with n₁, n₂ the inward normals of the vertex's edges, farther
+     * out at sharp vertices.
+     */
+    @Override
+    double[] bounds() {
+        double[] box = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+        double delta = EDGE_TOLERANCE * size;
+        int n = vertexCoordinates.length / 3;
+        for (int i = 0; i < n; ++i) {
+            int previous = 3 * ((i + n - 1) % n);
+            int current = 3 * i;
+            double cos = edgeNormals[previous] * edgeNormals[current]
+                    + edgeNormals[previous + 1] * edgeNormals[current + 1]
+                    + edgeNormals[previous + 2] * edgeNormals[current + 2];
+            double reach = delta / (1 + cos);
+            for (int k = 0; k < 3; ++k) {
+                double corner = vertexCoordinates[current + k]
+                        - reach * (edgeNormals[previous + k] + edgeNormals[current + k]);
+                box[k] = Math.min(box[k], Math.min(corner, vertexCoordinates[current + k]));
+                box[3 + k] = Math.max(box[3 + k], Math.max(corner, vertexCoordinates[current + k]));
+            }
+        }
+        return box;
     }
 
     @Override

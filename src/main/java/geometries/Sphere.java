@@ -16,6 +16,10 @@ import static primitives.Util.requirePositive;
 public class Sphere extends Geometry {
     private final Point3D center;
     private final double radius;
+    private final double cx;
+    private final double cy;
+    private final double cz;
+    private final double radiusSquared;
 
     /**
      * Creates a sphere.
@@ -26,6 +30,10 @@ public class Sphere extends Geometry {
     public Sphere(Point3D center, double radius) {
         this.center = requireNonNull(center, "sphere center");
         this.radius = requirePositive(radius, "sphere radius");
+        this.cx = center.getX();
+        this.cy = center.getY();
+        this.cz = center.getZ();
+        this.radiusSquared = radius * radius;
     }
 
     /** @return the centre */
@@ -47,19 +55,10 @@ public class Sphere extends Geometry {
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         Point3D p0 = ray.getP0();
         Vector dir = ray.getDir();
-        double ux = center.getX() - p0.getX();
-        double uy = center.getY() - p0.getY();
-        double uz = center.getZ() - p0.getZ();
-        double tm = ux * dir.getX() + uy * dir.getY() + uz * dir.getZ();
-        double dSquared = ux * ux + uy * uy + uz * uz - tm * tm;
-        double thSquared = alignZero(radius * radius - dSquared);
-        if (thSquared <= 0)
-            return null; // the ray misses or only touches the sphere
-        double th = Math.sqrt(thSquared);
-        double t1 = alignZero(tm - th);
-        double t2 = alignZero(tm + th);
-        boolean hit1 = t1 > 0 && t1 <= maxDistance;
-        boolean hit2 = t2 > 0 && t2 <= maxDistance;
+        double t1 = root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), -1);
+        double t2 = root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), 1);
+        boolean hit1 = inRange(t1, maxDistance);
+        boolean hit2 = inRange(t2, maxDistance);
         if (hit1 && hit2)
             return List.of(new GeoPoint(this, ray.getPoint(t1)), new GeoPoint(this, ray.getPoint(t2)));
         if (hit1)
@@ -67,6 +66,46 @@ public class Sphere extends Geometry {
         if (hit2)
             return List.of(new GeoPoint(this, ray.getPoint(t2)));
         return null;
+    }
+
+    @Override
+    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        double t1 = root(ox, oy, oz, dx, dy, dz, -1);
+        if (t1 > 0)
+            return t1 <= maxT ? t1 : NO_HIT;
+        double t2 = root(ox, oy, oz, dx, dy, dz, 1);
+        return inRange(t2, maxT) ? t2 : NO_HIT;
+    }
+
+    @Override
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        return (inRange(root(ox, oy, oz, dx, dy, dz, -1), maxT) ? 1 : 0)
+                + (inRange(root(ox, oy, oz, dx, dy, dz, 1), maxT) ? 1 : 0);
+    }
+
+    @Override
+    double[] bounds() {
+        return new double[] { cx - radius, cy - radius, cz - radius, cx + radius, cy + radius, cz + radius };
+    }
+
+    /**
+     * One of the distances along a ray (origin o, unit direction d) where it crosses the sphere:
+     * tm ∓ th, with tm the distance to the point nearest the centre and th the half chord.
+     *
+     * @param sign -1 for the nearer crossing, 1 for the farther
+     * @return the distance (maybe negative), or NaN when the ray misses or only touches the sphere
+     */
+    private double root(double ox, double oy, double oz, double dx, double dy, double dz, double sign) {
+        double ux = cx - ox;
+        double uy = cy - oy;
+        double uz = cz - oz;
+        double tm = ux * dx + uy * dy + uz * dz;
+        double thSquared = alignZero(radiusSquared - (ux * ux + uy * uy + uz * uz - tm * tm));
+        return thSquared <= 0 ? Double.NaN : alignZero(tm + sign * Math.sqrt(thSquared));
+    }
+
+    private static boolean inRange(double t, double maxT) {
+        return t > 0 && t <= maxT;
     }
 
     @Override

@@ -1,10 +1,8 @@
 package geometries;
 
-import java.util.List;
-
 import primitives.Point3D;
-import primitives.Ray;
-import primitives.Vector;
+
+import static primitives.Util.alignZero;
 
 /**
  * A triangle: a polygon of three vertices, intersected by the Möller–Trumbore test on precomputed
@@ -49,33 +47,52 @@ public class Triangle extends Polygon {
     }
 
     @Override
-    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        Vector dir = ray.getDir();
-        double dx = dir.getX();
-        double dy = dir.getY();
-        double dz = dir.getZ();
+    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         double px = dy * e2z - dz * e2y;
         double py = dz * e2x - dx * e2z;
         double pz = dx * e2y - dy * e2x;
         double det = e1x * px + e1y * py + e1z * pz;
         if (Math.abs(det) < parallelLimit)
-            return null;
+            return NO_HIT;
         double inv = 1.0 / det;
-        Point3D p0 = ray.getP0();
-        double tx = p0.getX() - p1x;
-        double ty = p0.getY() - p1y;
-        double tz = p0.getZ() - p1z;
+        double tx = ox - p1x;
+        double ty = oy - p1y;
+        double tz = oz - p1z;
         double u = (tx * px + ty * py + tz * pz) * inv;
         if (u < -BARYCENTRIC_TOLERANCE || u > 1 + BARYCENTRIC_TOLERANCE)
-            return null;
+            return NO_HIT;
         double qx = ty * e1z - tz * e1y;
         double qy = tz * e1x - tx * e1z;
         double qz = tx * e1y - ty * e1x;
         double v = (dx * qx + dy * qy + dz * qz) * inv;
         if (v < -BARYCENTRIC_TOLERANCE || u + v > 1 + BARYCENTRIC_TOLERANCE)
-            return null;
-        double t = primitives.Util.alignZero((e2x * qx + e2y * qy + e2z * qz) * inv);
-        return t > 0 && t <= maxDistance ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
+            return NO_HIT;
+        double t = alignZero((e2x * qx + e2y * qy + e2z * qz) * inv);
+        return t > 0 && t <= maxT ? t : NO_HIT;
+    }
+
+    /**
+     * The box around every point {@link #nearestHit} accepts: the triangle grown by the barycentric
+     * tolerance τ, whose corners are p + τ·((p − q) + (p − r)) for each vertex p and the other two q, r.
+     */
+    @Override
+    double[] bounds() {
+        double[] box = new double[6];
+        for (int k = 0; k < 3; ++k) {
+            double a = coordinate(vertices.get(0), k);
+            double b = coordinate(vertices.get(1), k);
+            double c = coordinate(vertices.get(2), k);
+            double ca = a + BARYCENTRIC_TOLERANCE * ((a - b) + (a - c));
+            double cb = b + BARYCENTRIC_TOLERANCE * ((b - a) + (b - c));
+            double cc = c + BARYCENTRIC_TOLERANCE * ((c - a) + (c - b));
+            box[k] = Math.min(Math.min(a, Math.min(b, c)), Math.min(ca, Math.min(cb, cc)));
+            box[3 + k] = Math.max(Math.max(a, Math.max(b, c)), Math.max(ca, Math.max(cb, cc)));
+        }
+        return box;
+    }
+
+    private static double coordinate(Point3D point, int axis) {
+        return axis == 0 ? point.getX() : axis == 1 ? point.getY() : point.getZ();
     }
 
     @Override

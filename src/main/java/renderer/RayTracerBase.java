@@ -49,6 +49,13 @@ public abstract class RayTracerBase {
     public abstract Color traceRay(Ray ray);
 
     /**
+     * Gets ready to trace the scene as it is now: {@link Render} calls this before every render.
+     * Nothing to do by default; a ray tracer with an acceleration structure builds it here.
+     */
+    protected void prepare() {
+    }
+
+    /**
      * Sets the number of shadow rays per light for soft shadows: sqrtBeamNum² rays to the light's
      * square, plus one to its centre.
      *

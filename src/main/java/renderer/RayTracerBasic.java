@@ -1,7 +1,6 @@
 package renderer;
 
-import java.util.List;
-
+import geometries.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
 import lighting.AreaLightSource;
 import lighting.LightSource;
@@ -25,6 +24,9 @@ public class RayTracerBasic extends RayTracerBase {
     private static final double MIN_CALC_COLOR_K = 0.001;
     private static final double INITIAL_K = 1.0;
 
+    private volatile BoundingVolumeHierarchy accelerator;
+    private boolean bruteForce;
+
     /**
      * Creates a ray tracer for a scene.
      *
@@ -41,7 +43,39 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     private GeoPoint findClosestIntersection(Ray ray) {
-        return ray.findClosestGeoPoint(scene.geometries.findGeoIntersections(ray));
+        BoundingVolumeHierarchy bvh = accelerator();
+        return bvh.closestHit(ray, threadState().query(bvh));
+    }
+
+    /** Builds the bounding volume hierarchy over the scene's bodies as they are now. */
+    @Override
+    protected void prepare() {
+        accelerator = bruteForce ? BoundingVolumeHierarchy.scan(scene.geometries)
+                : BoundingVolumeHierarchy.build(scene.geometries);
+    }
+
+    /**
+     * Makes the tracer test every body on every ray instead of walking the hierarchy: the reference
+     * the hierarchy is checked against.
+     *
+     * @param bruteForce true for a linear scan of the bodies
+     */
+    void setBruteForce(boolean bruteForce) {
+        this.bruteForce = bruteForce;
+        prepare();
+    }
+
+    /** The hierarchy, built on first use when no render has prepared it. */
+    private BoundingVolumeHierarchy accelerator() {
+        BoundingVolumeHierarchy bvh = accelerator;
+        if (bvh == null) {
+            synchronized (this) {
+                if (accelerator == null)
+                    prepare();
+                bvh = accelerator;
+            }
+        }
+        return bvh;
     }
 
     /** The colour at a point seen by a primary ray: the recursive colour plus the ambient light. */
@@ -157,59 +191,97 @@ public class RayTracerBasic extends RayTracerBase {
         JitteredGrid grid = getBeamGrid();
         double[] samples = state.points(grid);
         grid.sample(state.random, samples);
-        LightSquare square = new LightSquare(light, point);
+        BoundingVolumeHierarchy bvh = accelerator();
+        LightSquare square = new LightSquare(light, point, n, bvh, state.query(bvh));
         int outline = grid.getOutlineCount();
-        ktr += square.visibility(samples, 0, outline, n, geoPoint);
+        ktr += square.visibility(samples, 0, outline);
         int rays = 1 + outline;
         boolean agree = ktr == 0 || ktr == rays;
         if (!(isAdaptiveSoftShadows() && agree)) {
-            ktr += square.visibility(samples, outline, grid.getSamplesCount(), n, geoPoint);
+            ktr += square.visibility(samples, outline, grid.getSamplesCount());
             rays = 1 + grid.getSamplesCount();
         }
         state.shadowRays += rays;
         return ktr / rays;
     }
 
-    /** A light's square as seen from a lit point: its centre, its sides U and V, and its edge. */
-    private final class LightSquare {
+    /**
+     * A light's square as seen from a lit point, in raw doubles: shadow rays to its sample points are
+     * traced without allocating anything.
+     */
+    private static final class LightSquare {
         private final double cx;
         private final double cy;
         private final double cz;
-        private final Vector u;
-        private final Vector v;
+        private final double ux;
+        private final double uy;
+        private final double uz;
+        private final double vx;
+        private final double vy;
+        private final double vz;
         private final double edges;
+        private final double px;
+        private final double py;
+        private final double pz;
+        /** The normal scaled to the length DELTA: how far a shadow ray's head moves off the surface. */
+        private final double nx;
+        private final double ny;
+        private final double nz;
+        private final BoundingVolumeHierarchy bvh;
+        private final BoundingVolumeHierarchy.Query query;
 
-        LightSquare(AreaLightSource light, Point3D p) {
+        LightSquare(AreaLightSource light, Point3D p, Vector n, BoundingVolumeHierarchy bvh,
+                    BoundingVolumeHierarchy.Query query) {
             Point3D center = light.getCenter();
+            Vector u = light.getU(p);
+            Vector v = light.getV(p);
+            double delta = Ray.DELTA / n.length();
             this.cx = center.getX();
             this.cy = center.getY();
             this.cz = center.getZ();
-            this.u = light.getU(p);
-            this.v = light.getV(p);
+            this.ux = u.getX();
+            this.uy = u.getY();
+            this.uz = u.getZ();
+            this.vx = v.getX();
+            this.vy = v.getY();
+            this.vz = v.getZ();
             this.edges = light.getEdges();
+            this.px = p.getX();
+            this.py = p.getY();
+            this.pz = p.getZ();
+            this.nx = n.getX() * delta;
+            this.ny = n.getY() * delta;
+            this.nz = n.getZ() * delta;
+            this.bvh = bvh;
+            this.query = query;
         }
 
         /**
-         * The summed transparency of rays to some of the sample points.
+         * The summed transparency of the shadow rays to some of the sample points. Like
+         * {@link Ray#Ray(Point3D, Vector, Vector)}, each ray starts DELTA off the surface on the side it
+         * leaves to.
          *
-         * @param samples  sample points in the unit square, as a {@link JitteredGrid} draws them
-         * @param from     the first sample point
-         * @param to       one past the last sample point
-         * @param n        the surface normal at the lit point
-         * @param geoPoint the lit point
+         * @param samples sample points in the unit square, as a {@link JitteredGrid} draws them
+         * @param from    the first sample point
+         * @param to      one past the last sample point
          * @return the sum of the rays' transparencies
          */
-        double visibility(double[] samples, int from, int to, Vector n, GeoPoint geoPoint) {
-            Point3D point = geoPoint.point;
+        double visibility(double[] samples, int from, int to) {
             double ktr = 0;
             for (int s = from; s < to; ++s) {
                 double du = (0.5 - samples[2 * s]) * edges;
                 double dv = (0.5 - samples[2 * s + 1]) * edges;
-                Point3D sample = new Point3D(cx + u.getX() * du + v.getX() * dv,
-                        cy + u.getY() * du + v.getY() * dv,
-                        cz + u.getZ() * du + v.getZ() * dv);
-                ktr += RayTracerBasic.this.visibility(point.distance(sample),
-                        new Ray(point, sample.subtract(point), n), geoPoint);
+                double dx = cx + ux * du + vx * dv - px;
+                double dy = cy + uy * du + vy * dv - py;
+                double dz = cz + uz * du + vz * dv - pz;
+                double distance = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                dx /= distance;
+                dy /= distance;
+                dz /= distance;
+                double side = alignZero(nx * dx + ny * dy + nz * dz);
+                double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
+                ktr += bvh.transmittance(px + offset * nx, py + offset * ny, pz + offset * nz, dx, dy, dz,
+                        distance, MIN_CALC_COLOR_K, query);
             }
             return ktr;
         }
@@ -225,18 +297,10 @@ public class RayTracerBasic extends RayTracerBase {
      * @return the transparency in [0, 1]
      */
     double visibility(double lightDistance, Ray lightRay, GeoPoint geoPoint) {
-        // the head is DELTA off the surface: no blocker nearer the point than the light lies farther along
-        List<GeoPoint> intersections = scene.geometries.findGeoIntersections(lightRay, lightDistance + Ray.DELTA);
-        if (intersections == null)
-            return 1.0;
-        double ktr = 1.0;
-        for (GeoPoint gp : intersections) {
-            if (alignZero(gp.point.distance(geoPoint.point) - lightDistance) <= 0) {
-                ktr *= gp.geometry.getMaterial().getKt();
-                if (ktr < MIN_CALC_COLOR_K)
-                    return 0.0;
-            }
-        }
-        return ktr;
+        BoundingVolumeHierarchy bvh = accelerator();
+        Point3D p0 = lightRay.getP0();
+        Vector dir = lightRay.getDir();
+        return bvh.transmittance(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), lightDistance,
+                MIN_CALC_COLOR_K, threadState().query(bvh));
     }
 }

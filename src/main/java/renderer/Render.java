@@ -169,7 +169,7 @@ public class Render {
         requireImageWriter();
         if (camera == null)
             throw new MissingResourceException("Render: the camera is not set", Render.class.getName(), "camera");
-        requireRayTracer();
+        requireRayTracer().prepare();
         new TileRenderer().run();
     }
 

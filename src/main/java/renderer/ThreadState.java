@@ -2,6 +2,8 @@ package renderer;
 
 import java.util.SplittableRandom;
 
+import geometries.BoundingVolumeHierarchy;
+
 /**
  * What one rendering thread keeps for itself in a ray tracer, so that the per-pixel path takes no
  * lock: the current pixel's random stream, room for sample points, and the thread's ray counts.
@@ -14,6 +16,8 @@ final class ThreadState {
     /** The shadow rays traced by this thread. */
     long shadowRays;
     private double[] points = new double[0];
+    private BoundingVolumeHierarchy queried;
+    private BoundingVolumeHierarchy.Query query;
 
     /**
      * Creates the state of a thread.
@@ -35,5 +39,19 @@ final class ThreadState {
         if (points.length < length)
             points = new double[length];
         return points;
+    }
+
+    /**
+     * Scratch space for queries on a hierarchy, reused while the hierarchy stays the same.
+     *
+     * @param bvh the hierarchy
+     * @return this thread's query for it
+     */
+    BoundingVolumeHierarchy.Query query(BoundingVolumeHierarchy bvh) {
+        if (queried != bvh) {
+            query = bvh.newQuery();
+            queried = bvh;
+        }
+        return query;
     }
 }

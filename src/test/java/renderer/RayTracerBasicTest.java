@@ -481,4 +481,48 @@ class RayTracerBasicTest {
                 ++differing;
         assertNotEquals(0, differing, "TC11: another seed must change the penumbra's noise");
     }
+
+    /** Renders a gallery picture at a quarter of its size, through the hierarchy or a brute-force scan. */
+    private static ImageWriter renderQuarter(app.Picture picture, boolean bruteForce) {
+        RayTracerBasic tracer = new RayTracerBasic(picture.scene());
+        tracer.setBruteForce(bruteForce);
+        ImageWriter image = new ImageWriter(picture.name() + (bruteForce ? "-scan" : "-bvh"), picture.nX() / 4,
+                picture.nY() / 4, PICTURE_FOLDER.resolve("acceleration"));
+        Render render = new Render().setImageWriter(image).setCamera(picture.camera()).setRayTracer(tracer)
+                .setSoftShadows(picture.softShadows());
+        render.renderImage();
+        return image;
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#traceRay(Ray)}: the bounding volume hierarchy changes no
+     * picture — every gallery picture renders as through a brute-force scan of every body.
+     */
+    @Test
+    void testAccelerationKeepsPictures() {
+        int pixels = 0;
+        int differing = 0;
+        int worst = 0;
+        for (app.Picture picture : app.Gallery.pictures()) {
+            ImageWriter fast = renderQuarter(picture, false);
+            ImageWriter scan = renderQuarter(picture, true);
+            for (int y = 0; y < fast.getNy(); ++y)
+                for (int x = 0; x < fast.getNx(); ++x) {
+                    int a = fast.getPixel(x, y).getRGB();
+                    int b = scan.getPixel(x, y).getRGB();
+                    ++pixels;
+                    if (a != b) {
+                        ++differing;
+                        for (int shift = 0; shift < 24; shift += 8)
+                            worst = Math.max(worst, Math.abs(((a >> shift) & 0xFF) - ((b >> shift) & 0xFF)));
+                    }
+                }
+        }
+        // ===== Equivalence Partitions Tests =====
+        // TC01: at most 0.1 % of the pixels differ (floating-point ties on silhouettes)
+        assertTrue(differing <= pixels / 1000, "TC01: " + differing + " of " + pixels + " pixels differ");
+        // ===== Boundary Values Tests =====
+        // TC11: no pixel differs by more than a few levels
+        assertTrue(worst <= 4, "TC11: a pixel differs by " + worst + " levels");
+    }
 }

@@ -1,0 +1,433 @@
+package geometries;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import geometries.Intersectable.GeoPoint;
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+import static primitives.Util.requireNonNull;
+
+/**
+ * A bounding volume hierarchy over the bodies of a composite, the way a ray tracer finds what a ray
+ * hits without testing every body. Built once (per render) from the scene's {@link Geometries},
+ * which stays the user-facing composite.
+ * <p>
+ * The tree lives in flat arrays (a node's box, its first body or right child, its body count and
+ * split axis) and is walked with an explicit stack, the nearer child first. It is built top down
+ * with the binned surface-area heuristic. Unbounded bodies (planes, tubes) stay outside the tree
+ * and are tested on every ray, as are intersectables that are not {@link Geometry}s.
+ * <p>
+ * Queries take a {@link Query}, the caller's per-thread scratch space, and allocate nothing but
+ * the {@link GeoPoint} a closest-hit query returns.
+ */
+public final class BoundingVolumeHierarchy {
+    private static final int BINS = 16;
+    private static final int MAX_LEAF_SIZE = 4;
+    private static final int MAX_DEPTH = 64;
+    /** The cost of visiting a node, relative to testing one body, in the surface-area heuristic. */
+    private static final double TRAVERSAL_COST = 1.0;
+    /** Boxes grow by this fraction of their size (plus an absolute bit) so flat bodies are hit. */
+    private static final double PADDING = 1e-9;
+
+    private final Geometry[] bodies;
+    private final Geometry[] unbounded;
+    private final Intersectable[] others;
+    private final double[] nodeBounds;
+    private final int[] nodeFirst;
+    private final int[] nodeCount;
+    private final int[] nodeAxis;
+    private int nodesCount;
+    private int depth;
+
+    /**
+     * Per-thread scratch space of queries: the traversal stack and the running result. Get one from
+     * {@link #newQuery()} and use it on one thread at a time.
+     */
+    public static final class Query {
+        private final int[] stack;
+        private double maxT;
+        private Geometry geometry;
+        private double ktr;
+
+        private Query(int stackSize) {
+            this.stack = new int[stackSize];
+        }
+    }
+
+    private BoundingVolumeHierarchy(Intersectable scene, boolean tree) {
+        List<Geometry> bounded = new ArrayList<>();
+        List<Geometry> infinite = new ArrayList<>();
+        List<Intersectable> generic = new ArrayList<>();
+        flatten(requireNonNull(scene, "geometries"), bounded, infinite, generic);
+        if (!tree) {
+            infinite.addAll(bounded);
+            bounded.clear();
+        }
+        this.bodies = bounded.toArray(new Geometry[0]);
+        this.unbounded = infinite.toArray(new Geometry[0]);
+        this.others = generic.toArray(new Intersectable[0]);
+        int maxNodes = Math.max(1, 2 * bodies.length);
+        this.nodeBounds = new double[6 * maxNodes];
+        this.nodeFirst = new int[maxNodes];
+        this.nodeCount = new int[maxNodes];
+        this.nodeAxis = new int[maxNodes];
+        if (bodies.length > 0)
+            new Builder().build();
+    }
+
+    /**
+     * Builds the hierarchy over a composite's bodies.
+     *
+     * @param geometries the composite (or a single body)
+     * @return the hierarchy
+     */
+    public static BoundingVolumeHierarchy build(Intersectable geometries) {
+        return new BoundingVolumeHierarchy(geometries, true);
+    }
+
+    /**
+     * A brute-force stand-in with the same queries: no tree, every body tested on every ray.
+     *
+     * @param geometries the composite (or a single body)
+     * @return the linear scan
+     */
+    public static BoundingVolumeHierarchy scan(Intersectable geometries) {
+        return new BoundingVolumeHierarchy(geometries, false);
+    }
+
+    private static void flatten(Intersectable item, List<Geometry> bounded, List<Geometry> infinite,
+                                List<Intersectable> generic) {
+        if (item instanceof Geometries composite)
+            for (Intersectable child : composite.getGeometries())
+                flatten(child, bounded, infinite, generic);
+        else if (item instanceof Geometry geometry)
+            (geometry.bounds() == null ? infinite : bounded).add(geometry);
+        else
+            generic.add(item);
+    }
+
+    /** @return a fresh scratch space for queries on this hierarchy */
+    public Query newQuery() {
+        return new Query(depth + 2);
+    }
+
+    /** @return the number of nodes of the tree (0 when no body is bounded) */
+    public int getNodesCount() {
+        return nodesCount;
+    }
+
+    /** @return the depth of the tree (1 for a single leaf, 0 for none) */
+    public int getDepth() {
+        return depth;
+    }
+
+    /** @return the number of bodies in the tree */
+    public int getBoundedCount() {
+        return bodies.length;
+    }
+
+    /**
+     * The nearest intersection of a ray.
+     *
+     * @param ray   the ray
+     * @param query this thread's scratch space
+     * @return the nearest intersection, or null when the ray hits nothing
+     */
+    public GeoPoint closestHit(Ray ray, Query query) {
+        Point3D p0 = ray.getP0();
+        Vector dir = ray.getDir();
+        query.maxT = Geometry.NO_HIT;
+        query.geometry = null;
+        traverse(query, p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), false, 0);
+        GeoPoint nearest = query.geometry == null ? null : new GeoPoint(query.geometry, ray.getPoint(query.maxT));
+        for (Intersectable other : others)
+            nearest = nearer(ray, nearest, other.findGeoIntersections(ray));
+        return nearest;
+    }
+
+    private static GeoPoint nearer(Ray ray, GeoPoint nearest, List<GeoPoint> candidates) {
+        if (candidates == null)
+            return nearest;
+        List<GeoPoint> all = new ArrayList<>(candidates);
+        if (nearest != null)
+            all.add(nearest);
+        return ray.findClosestGeoPoint(all);
+    }
+
+    /**
+     * The share of light that passes along a ray up to a distance: the product of the {@code kT} of
+     * every intersection before it, 0 as soon as an opaque body is met or the product falls below
+     * a limit.
+     *
+     * @param ox   the ray's origin, x
+     * @param oy   the ray's origin, y
+     * @param oz   the ray's origin, z
+     * @param dx   the ray's unit direction, x
+     * @param dy   the ray's unit direction, y
+     * @param dz   the ray's unit direction, z
+     * @param maxT the distance along the ray (to the light)
+     * @param minK below this product the answer is 0
+     * @param query this thread's scratch space
+     * @return the transparency in [0, 1]
+     */
+    public double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double maxT,
+                                double minK, Query query) {
+        query.maxT = maxT;
+        query.ktr = 1;
+        if (!traverse(query, ox, oy, oz, dx, dy, dz, true, minK))
+            return 0;
+        if (others.length == 0)
+            return query.ktr;
+        Ray ray = new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz));
+        double ktr = query.ktr;
+        for (Intersectable other : others) {
+            List<GeoPoint> hits = other.findGeoIntersections(ray, maxT);
+            if (hits != null)
+                for (GeoPoint hit : hits)
+                    ktr *= hit.geometry.getMaterial().getKt();
+            if (ktr < minK)
+                return 0;
+        }
+        return ktr;
+    }
+
+    /**
+     * Walks the unbounded bodies and the tree. A closest-hit walk shrinks the query's maxT to each
+     * nearer hit; a transmittance walk multiplies the query's ktr and stops when it falls below minK.
+     *
+     * @return false when a transmittance walk stopped early (the light is blocked)
+     */
+    private boolean traverse(Query query, double ox, double oy, double oz, double dx, double dy, double dz,
+                             boolean transmittance, double minK) {
+        for (Geometry body : unbounded)
+            if (!visit(body, query, ox, oy, oz, dx, dy, dz, transmittance, minK))
+                return false;
+        if (nodesCount == 0)
+            return true;
+        double ix = 1 / dx;
+        double iy = 1 / dy;
+        double iz = 1 / dz;
+        int[] stack = query.stack;
+        int top = 0;
+        int node = 0;
+        while (true) {
+            if (boxHit(node, ox, oy, oz, ix, iy, iz, query.maxT)) {
+                int count = nodeCount[node];
+                if (count == 0) {
+                    int axis = nodeAxis[node];
+                    boolean negative = axis == 0 ? dx < 0 : axis == 1 ? dy < 0 : dz < 0;
+                    stack[top++] = negative ? node + 1 : nodeFirst[node];
+                    node = negative ? nodeFirst[node] : node + 1;
+                    continue;
+                }
+                int first = nodeFirst[node];
+                for (int b = first; b < first + count; ++b)
+                    if (!visit(bodies[b], query, ox, oy, oz, dx, dy, dz, transmittance, minK))
+                        return false;
+            }
+            if (top == 0)
+                return true;
+            node = stack[--top];
+        }
+    }
+
+    private static boolean visit(Geometry body, Query query, double ox, double oy, double oz,
+                                 double dx, double dy, double dz, boolean transmittance, double minK) {
+        if (transmittance) {
+            query.ktr *= body.transmittance(ox, oy, oz, dx, dy, dz, query.maxT);
+            return query.ktr > 0 && query.ktr >= minK;
+        }
+        double t = body.nearestHit(ox, oy, oz, dx, dy, dz, query.maxT);
+        if (t < query.maxT) {
+            query.maxT = t;
+            query.geometry = body;
+        }
+        return true;
+    }
+
+    /**
+     * Whether a ray meets a node's box between its start and maxT (the slab test). Each slab is
+     * entered at its near face (the low one for a positive direction component, so for +0.0, and
+     * the high one for a negative component, so for −0.0) and left at the far one. A direction
+     * component of ±0 makes the inverse ±∞: a ray outside the slab then gets an empty interval, one
+     * inside it (−∞, +∞), and one lying exactly in a face's plane gets 0·∞ = NaN there, which the
+     * comparisons below skip, so the slab (closed) does not restrict the interval.
+     */
+    private boolean boxHit(int node, double ox, double oy, double oz, double ix, double iy, double iz, double maxT) {
+        int b = 6 * node;
+        double near = ((ix < 0 ? nodeBounds[b + 3] : nodeBounds[b]) - ox) * ix;
+        double far = ((ix < 0 ? nodeBounds[b] : nodeBounds[b + 3]) - ox) * ix;
+        near = near > 0 ? near : 0;
+        far = far < maxT ? far : maxT;
+        double lo = ((iy < 0 ? nodeBounds[b + 4] : nodeBounds[b + 1]) - oy) * iy;
+        double hi = ((iy < 0 ? nodeBounds[b + 1] : nodeBounds[b + 4]) - oy) * iy;
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        lo = ((iz < 0 ? nodeBounds[b + 5] : nodeBounds[b + 2]) - oz) * iz;
+        hi = ((iz < 0 ? nodeBounds[b + 2] : nodeBounds[b + 5]) - oz) * iz;
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        return near <= far;
+    }
+
+    /** The top-down build: bodies are reordered so every leaf holds a run of them. */
+    private final class Builder {
+        private final double[] boxes = new double[6 * bodies.length];
+        private final double[] centroids = new double[3 * bodies.length];
+        private final int[] order = new int[bodies.length];
+        private final int[] binCounts = new int[BINS];
+        private final double[] binBoxes = new double[6 * BINS];
+        private final double[] rightAreas = new double[BINS];
+
+        void build() {
+            for (int i = 0; i < bodies.length; ++i) {
+                double[] box = bodies[i].bounds();
+                for (int k = 0; k < 3; ++k) {
+                    double pad = PADDING * (1 + Math.abs(box[k]) + Math.abs(box[3 + k]));
+                    boxes[6 * i + k] = box[k] - pad;
+                    boxes[6 * i + 3 + k] = box[3 + k] + pad;
+                    centroids[3 * i + k] = (box[k] + box[3 + k]) / 2;
+                }
+                order[i] = i;
+            }
+            nodesCount = 1;
+            split(0, 0, bodies.length, 1);
+            Geometry[] ordered = new Geometry[bodies.length];
+            for (int i = 0; i < bodies.length; ++i)
+                ordered[i] = bodies[order[i]];
+            System.arraycopy(ordered, 0, bodies, 0, bodies.length);
+        }
+
+        /** Makes node the parent of bodies [start, end), splitting it further while that pays off. */
+        private void split(int node, int start, int end, int level) {
+            depth = Math.max(depth, level);
+            double[] centroidBox = enclose(node, start, end);
+            int axis = widestAxis(centroidBox);
+            double low = centroidBox[axis];
+            double extent = centroidBox[3 + axis] - low;
+            int count = end - start;
+            int bin = count <= MAX_LEAF_SIZE || level >= MAX_DEPTH || !(extent > 0) ? -1
+                    : bestSplit(node, start, end, axis, low, extent);
+            int middle = bin < 0 ? start : partition(start, end, axis, low, extent, bin);
+            if (middle == start || middle == end) {
+                nodeFirst[node] = start;
+                nodeCount[node] = count;
+                return;
+            }
+            nodeAxis[node] = axis;
+            nodeCount[node] = 0;
+            int left = nodesCount++;
+            split(left, start, middle, level + 1);
+            int right = nodesCount++;
+            nodeFirst[node] = right;
+            split(right, middle, end, level + 1);
+        }
+
+        /** Sets a node's box around bodies [start, end) and returns the box around their centroids. */
+        private double[] enclose(int node, int start, int end) {
+            double[] centroidBox = emptyBox();
+            int b = 6 * node;
+            System.arraycopy(emptyBox(), 0, nodeBounds, b, 6);
+            for (int i = start; i < end; ++i) {
+                int body = order[i];
+                for (int k = 0; k < 3; ++k) {
+                    nodeBounds[b + k] = Math.min(nodeBounds[b + k], boxes[6 * body + k]);
+                    nodeBounds[b + 3 + k] = Math.max(nodeBounds[b + 3 + k], boxes[6 * body + 3 + k]);
+                    centroidBox[k] = Math.min(centroidBox[k], centroids[3 * body + k]);
+                    centroidBox[3 + k] = Math.max(centroidBox[3 + k], centroids[3 * body + k]);
+                }
+            }
+            return centroidBox;
+        }
+
+        private int widestAxis(double[] box) {
+            double x = box[3] - box[0];
+            double y = box[4] - box[1];
+            double z = box[5] - box[2];
+            return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
+        }
+
+        private int binOf(int body, int axis, double low, double extent) {
+            return Math.min(BINS - 1, (int) ((centroids[3 * body + axis] - low) / extent * BINS));
+        }
+
+        /**
+         * The bin after which splitting costs least by the surface-area heuristic, or -1 when no split
+         * is cheaper than a leaf.
+         */
+        private int bestSplit(int node, int start, int end, int axis, double low, double extent) {
+            java.util.Arrays.fill(binCounts, 0);
+            for (int k = 0; k < BINS; ++k)
+                System.arraycopy(emptyBox(), 0, binBoxes, 6 * k, 6);
+            for (int i = start; i < end; ++i) {
+                int body = order[i];
+                int k = binOf(body, axis, low, extent);
+                ++binCounts[k];
+                growBox(binBoxes, 6 * k, boxes, 6 * body);
+            }
+            double[] sweep = emptyBox();
+            for (int k = BINS - 1; k > 0; --k) {
+                growBox(sweep, 0, binBoxes, 6 * k);
+                rightAreas[k] = area(sweep, 0);
+            }
+            System.arraycopy(emptyBox(), 0, sweep, 0, 6);
+            int leftCount = 0;
+            int best = -1;
+            double bestCost = (end - start) * area(nodeBounds, 6 * node) - TRAVERSAL_COST * area(nodeBounds, 6 * node);
+            for (int k = 0; k < BINS - 1; ++k) {
+                growBox(sweep, 0, binBoxes, 6 * k);
+                leftCount += binCounts[k];
+                int rightCount = end - start - leftCount;
+                if (leftCount == 0 || rightCount == 0)
+                    continue;
+                double cost = leftCount * area(sweep, 0) + rightCount * rightAreas[k + 1];
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    best = k;
+                }
+            }
+            return best;
+        }
+
+        /** Moves the bodies of bins up to and including bin to the front; returns where the rest start. */
+        private int partition(int start, int end, int axis, double low, double extent, int bin) {
+            int i = start;
+            int j = end - 1;
+            while (i <= j) {
+                if (binOf(order[i], axis, low, extent) <= bin)
+                    ++i;
+                else {
+                    int swap = order[i];
+                    order[i] = order[j];
+                    order[j--] = swap;
+                }
+            }
+            return i;
+        }
+
+        private double[] emptyBox() {
+            return new double[] { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                    Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+        }
+
+        private void growBox(double[] box, int b, double[] other, int o) {
+            if (other[o] > other[o + 3])
+                return; // an empty box
+            for (int k = 0; k < 3; ++k) {
+                box[b + k] = Math.min(box[b + k], other[o + k]);
+                box[b + 3 + k] = Math.max(box[b + 3 + k], other[o + 3 + k]);
+            }
+        }
+
+        /** Half the surface area of a box (the factor 2 does not change which split is best). */
+        private double area(double[] box, int b) {
+            double x = box[b + 3] - box[b];
+            double y = box[b + 4] - box[b + 1];
+            double z = box[b + 5] - box[b + 2];
+            return x * y + y * z + z * x;
+        }
+    }
+}

@@ -1,0 +1,1018 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+import geometries.BoundingVolumeHierarchy.Query;
+import geometries.Intersectable.GeoPoint;
+import primitives.Material;
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * Unit tests for {@link geometries.BoundingVolumeHierarchy}: closest hits and transmittance equal
+ * the brute-force answers of {@link Intersectable#findGeoIntersections(Ray)} on seeded random
+ * scenes, the shape of the tree, and rays on the boundaries of the slab test and of the bodies.
+ */
+class BoundingVolumeHierarchyTest {
+    /** Tolerance on the coordinates of a hit point. */
+    private static final double POINT_DELTA = 1e-7;
+    /** Two hits whose distances differ by less than this are a tie: either body is right. */
+    private static final double TIE = 1e-9;
+    /** Rays whose hit lies this close to the transmittance distance are not judged. */
+    private static final double MARGIN = 1e-6;
+    /** The renderer's transmittance cut-off. */
+    private static final double MIN_K = 1e-3;
+
+    /**
+     * A random test scene.
+     *
+     * @param geometries the composite handed to the hierarchy (may nest composites)
+     * @param bodies     every body in it, to aim rays at
+     * @param size       the half-width of the cube the bodies lie in
+     */
+    private record TestScene(Geometries geometries, List<Intersectable> bodies, double size) {
+    }
+
+    /**
+     * A body that is not a {@link Geometry}: it hands the intersections of the body it wraps, so the
+     * hierarchy must test it on every ray.
+     */
+    private static final class Wrapper extends Intersectable {
+        private final Intersectable inner;
+
+        /**
+         * Wraps a body.
+         *
+         * @param inner the body
+         */
+        Wrapper(Intersectable inner) {
+            this.inner = inner;
+        }
+
+        @Override
+        protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+            return inner.findGeoIntersections(ray, maxDistance);
+        }
+    }
+
+    // ---------------------------------------------------------------- random scenes and rays
+
+    /**
+     * A random unit vector, uniform over the sphere.
+     *
+     * @param rnd the generator
+     * @return the vector
+     */
+    private static Vector randomUnit(Random rnd) {
+        while (true) {
+            double x = rnd.nextGaussian();
+            double y = rnd.nextGaussian();
+            double z = rnd.nextGaussian();
+            double length = Math.sqrt(x * x + y * y + z * z);
+            if (length > 1e-3)
+                return new Vector(x / length, y / length, z / length);
+        }
+    }
+
+    /**
+     * A random point in the cube [-size, size]³ around a centre.
+     *
+     * @param rnd    the generator
+     * @param center the cube's centre
+     * @param size   the cube's half-width
+     * @return the point
+     */
+    private static Point3D randomPoint(Random rnd, Point3D center, double size) {
+        return new Point3D(center.getX() + size * (2 * rnd.nextDouble() - 1),
+                center.getY() + size * (2 * rnd.nextDouble() - 1),
+                center.getZ() + size * (2 * rnd.nextDouble() - 1));
+    }
+
+    /**
+     * A random sphere.
+     *
+     * @param rnd       the generator
+     * @param size      the half-width of the cube its centre lies in
+     * @param minRadius the smallest radius
+     * @param maxRadius the largest radius
+     * @return the sphere
+     */
+    private static Sphere randomSphere(Random rnd, double size, double minRadius, double maxRadius) {
+        return new Sphere(randomPoint(rnd, Point3D.ZERO, size), minRadius + (maxRadius - minRadius) * rnd.nextDouble());
+    }
+
+    /**
+     * A random triangle: its vertices lie in a small cube around a random point.
+     *
+     * @param rnd     the generator
+     * @param size    the half-width of the cube its centre lies in
+     * @param maxEdge the half-width of the cube around its centre its vertices lie in
+     * @return the triangle
+     */
+    private static Triangle randomTriangle(Random rnd, double size, double maxEdge) {
+        Point3D center = randomPoint(rnd, Point3D.ZERO, size);
+        while (true) {
+            try {
+                return new Triangle(randomPoint(rnd, center, maxEdge), randomPoint(rnd, center, maxEdge),
+                        randomPoint(rnd, center, maxEdge));
+            } catch (IllegalArgumentException e) {
+                // collinear by chance: draw again
+            }
+        }
+    }
+
+    /**
+     * A random quadrilateral: a square with a random orientation.
+     *
+     * @param rnd  the generator
+     * @param size the half-width of the cube its centre lies in
+     * @return the polygon
+     */
+    private static Polygon randomSquare(Random rnd, double size) {
+        Point3D center = randomPoint(rnd, Point3D.ZERO, size);
+        Vector normal = randomUnit(rnd);
+        Vector u = normal.crossProduct(Math.abs(normal.getX()) < 0.9 ? new Vector(1, 0, 0) : new Vector(0, 1, 0))
+                .normalize().scale(0.1 + rnd.nextDouble());
+        Vector v = normal.crossProduct(u);
+        return new Polygon(center.add(u), center.add(v), center.add(u.scale(-1)), center.add(v.scale(-1)));
+    }
+
+    /**
+     * A random cylinder.
+     *
+     * @param rnd  the generator
+     * @param size the half-width of the cube its base lies in
+     * @return the cylinder
+     */
+    private static Cylinder randomCylinder(Random rnd, double size) {
+        return new Cylinder(new Ray(randomPoint(rnd, Point3D.ZERO, size), randomUnit(rnd)), 0.2 + rnd.nextDouble(),
+                0.5 + 2 * rnd.nextDouble());
+    }
+
+    /**
+     * A random scene of the kind a scene index names (20 kinds, 1 to 2000 bodies).
+     *
+     * @param rnd   the generator
+     * @param index which scene, 0..19
+     * @return the scene
+     */
+    private static TestScene randomScene(Random rnd, int index) {
+        List<Intersectable> bodies = new ArrayList<>();
+        double size = 10;
+        switch (index) {
+        case 0 -> bodies.add(randomSphere(rnd, size, 1, 3));
+        case 1 -> bodies.add(randomTriangle(rnd, size, 5));
+        case 2 -> {
+            for (int i = 0; i < 3; ++i)
+                bodies.add(randomSphere(rnd, size, 0.5, 3));
+            bodies.add(new Plane(new Point3D(0, -12, 0), new Vector(0.1, 1, 0.2)));
+        }
+        case 3 -> {
+            for (int i = 0; i < 4; ++i)
+                bodies.add(randomTriangle(rnd, size, 4));
+        }
+        case 4 -> {
+            for (int i = 0; i < 5; ++i)
+                bodies.add(i % 2 == 0 ? randomSphere(rnd, size, 0.5, 2) : randomTriangle(rnd, size, 3));
+        }
+        case 5 -> {
+            for (int i = 0; i < 16; ++i)
+                bodies.add(i % 2 == 0 ? randomSphere(rnd, size, 0.5, 2) : randomTriangle(rnd, size, 3));
+            bodies.add(randomCylinder(rnd, size));
+            bodies.add(new Plane(new Point3D(0, 0, -13), new Vector(0, 0, 1)));
+        }
+        case 6 -> {
+            for (int i = 0; i < 50; ++i)
+                bodies.add(randomSphere(rnd, size, 0.2, 2));
+        }
+        case 7 -> {
+            for (int i = 0; i < 50; ++i)
+                bodies.add(randomTriangle(rnd, size, 3));
+        }
+        case 8 -> {
+            for (int i = 0; i < 200; ++i)
+                bodies.add(i % 3 == 0 ? randomSphere(rnd, size, 0.1, 1) : randomTriangle(rnd, size, 1.5));
+        }
+        case 9 -> {
+            for (int i = 0; i < 500; ++i)
+                bodies.add(i % 2 == 0 ? randomSphere(rnd, size, 0.05, 0.8) : randomTriangle(rnd, size, 1));
+            bodies.add(randomCylinder(rnd, size));
+            bodies.add(randomSquare(rnd, size));
+            bodies.add(new Tube(new Ray(new Point3D(0, 0, 0), new Vector(1, 1, 0)), 0.5));
+            bodies.add(new Plane(new Point3D(0, 11, 0), new Vector(0, -1, 0)));
+        }
+        case 10 -> {
+            for (int i = 0; i < 1000; ++i)
+                bodies.add(i % 2 == 0 ? randomSphere(rnd, size, 0.05, 0.5) : randomTriangle(rnd, size, 0.8));
+        }
+        case 11 -> {
+            for (int i = 0; i < 2000; ++i)
+                bodies.add(i % 4 == 0 ? randomSphere(rnd, size, 0.05, 0.4) : randomTriangle(rnd, size, 0.6));
+        }
+        case 12 -> { // many tiny triangles
+            for (int i = 0; i < 2000; ++i)
+                bodies.add(randomTriangle(rnd, size, 1e-2));
+        }
+        case 13, 14 -> { // every body's box has the same centre
+            Point3D c = new Point3D(1, -2, 0.5);
+            int n = index == 13 ? 300 : 1000;
+            for (int i = 0; i < n; ++i) {
+                if (i % 2 == 0) {
+                    bodies.add(new Sphere(c, 0.1 + 8 * rnd.nextDouble()));
+                    continue;
+                }
+                Vector a = randomUnit(rnd).scale(0.5 + 8 * rnd.nextDouble());
+                Vector b = new Vector(a.getX() * (2 * rnd.nextDouble() - 1), a.getY() * (2 * rnd.nextDouble() - 1),
+                        a.getZ() * (2 * rnd.nextDouble() - 1));
+                try {
+                    bodies.add(new Triangle(c.add(a), c.add(a.scale(-1)), c.add(b)));
+                } catch (IllegalArgumentException e) {
+                    // collinear by chance: skip it
+                }
+            }
+        }
+        case 17 -> { // two far clusters
+            for (int i = 0; i < 400; ++i) {
+                Point3D c = new Point3D(i % 2 == 0 ? -9 : 9, 0, 0);
+                bodies.add(i % 3 == 0 ? new Sphere(randomPoint(rnd, c, 1), 0.05 + 0.2 * rnd.nextDouble())
+                        : new Triangle(randomPoint(rnd, c, 1), randomPoint(rnd, c, 1), randomPoint(rnd, c, 1)));
+            }
+        }
+        case 18 -> { // big and small overlapping spheres
+            for (int i = 0; i < 300; ++i)
+                bodies.add(randomSphere(rnd, size, 0.01, i % 10 == 0 ? 5 : 0.5));
+        }
+        default -> { // 15, 16, 19: filled below
+        }
+        }
+        if (index == 15 || index == 16)
+            return nestedScene(rnd, index == 15 ? 300 : 60, size);
+        if (index == 19) {
+            for (int i = 0; i < 100; ++i)
+                bodies.add(i % 3 == 0 ? randomSquare(rnd, size) : randomTriangle(rnd, size, 2));
+            bodies.add(new Wrapper(randomSphere(rnd, size, 1, 3)));
+            bodies.add(new Wrapper(new Geometries(randomTriangle(rnd, size, 3), randomSphere(rnd, size, 0.5, 1))));
+        }
+        return new TestScene(new Geometries(bodies.toArray(new Intersectable[0])), bodies, size);
+    }
+
+    /**
+     * A scene whose bodies are spread over composites nested three deep, some of them empty, with a
+     * plane and a cylinder.
+     *
+     * @param rnd   the generator
+     * @param n     the number of spheres and triangles
+     * @param size  the half-width of the cube the bodies lie in
+     * @return the scene
+     */
+    private static TestScene nestedScene(Random rnd, int n, double size) {
+        Geometries root = new Geometries();
+        List<Geometries> composites = new ArrayList<>(List.of(root));
+        for (int i = 0; i < 3; ++i) {
+            Geometries child = new Geometries();
+            root.add(child);
+            composites.add(child);
+            for (int j = 0; j < 2; ++j) {
+                Geometries grandchild = new Geometries(new Geometries());
+                child.add(grandchild);
+                composites.add(grandchild);
+            }
+        }
+        List<Intersectable> bodies = new ArrayList<>();
+        for (int i = 0; i < n; ++i) {
+            Intersectable body = i % 2 == 0 ? randomSphere(rnd, size, 0.1, 1.5) : randomTriangle(rnd, size, 2);
+            composites.get(rnd.nextInt(composites.size())).add(body);
+            bodies.add(body);
+        }
+        Plane plane = new Plane(new Point3D(0, 0, -11), new Vector(0.2, 0.1, 1));
+        Cylinder cylinder = randomCylinder(rnd, size);
+        composites.get(3).add(plane);
+        composites.get(5).add(new Geometries(cylinder));
+        bodies.add(plane);
+        bodies.add(cylinder);
+        return new TestScene(root, bodies, size);
+    }
+
+    /**
+     * A random point on or in a body, to aim a ray at.
+     *
+     * @param rnd  the generator
+     * @param body the body
+     * @return the point
+     */
+    private static Point3D pointIn(Random rnd, Intersectable body) {
+        if (body instanceof Sphere sphere)
+            return sphere.getCenter().add(randomUnit(rnd).scale(sphere.getRadius() * (0.01 + 0.98 * rnd.nextDouble())));
+        if (body instanceof Polygon polygon) {
+            List<Point3D> vertices = polygon.getVertices();
+            double[] weights = new double[vertices.size()];
+            double sum = 0;
+            for (int i = 0; i < weights.length; ++i)
+                sum += weights[i] = -Math.log(1 - rnd.nextDouble());
+            double x = 0;
+            double y = 0;
+            double z = 0;
+            for (int i = 0; i < weights.length; ++i) {
+                x += weights[i] / sum * vertices.get(i).getX();
+                y += weights[i] / sum * vertices.get(i).getY();
+                z += weights[i] / sum * vertices.get(i).getZ();
+            }
+            return new Point3D(x, y, z);
+        }
+        if (body instanceof Cylinder cylinder)
+            return cylinder.getAxisRay().getPoint(cylinder.getHeight() * rnd.nextDouble());
+        if (body instanceof Wrapper wrapper)
+            return pointIn(rnd, wrapper.inner);
+        if (body instanceof Geometries composite)
+            return pointIn(rnd, composite.getGeometries().get(0));
+        return randomPoint(rnd, Point3D.ZERO, 5);
+    }
+
+    /**
+     * A random ray through a scene: from anywhere around or inside it, half of them aimed at a point
+     * of a random body, some along a coordinate axis.
+     *
+     * @param rnd   the generator
+     * @param scene the scene
+     * @return the ray
+     */
+    private static Ray randomRay(Random rnd, TestScene scene) {
+        List<Intersectable> bodies = scene.bodies();
+        double choice = rnd.nextDouble();
+        Point3D origin = choice < 0.15 ? pointIn(rnd, bodies.get(rnd.nextInt(bodies.size())))
+                : randomPoint(rnd, Point3D.ZERO, 1.5 * scene.size());
+        double aim = rnd.nextDouble();
+        if (aim < 0.1) {
+            double sign = rnd.nextBoolean() ? 1 : -1;
+            double zero = rnd.nextBoolean() ? 0.0 : -0.0;
+            int axis = rnd.nextInt(3);
+            return new Ray(origin, new Vector(axis == 0 ? sign : zero, axis == 1 ? sign : zero, axis == 2 ? sign : zero));
+        }
+        if (aim < 0.6) {
+            Point3D target = pointIn(rnd, bodies.get(rnd.nextInt(bodies.size())));
+            if (target.distance(origin) > 1e-6)
+                return new Ray(origin, target.subtract(origin));
+        }
+        return new Ray(origin, randomUnit(rnd));
+    }
+
+    // ---------------------------------------------------------------- references and assertions
+
+    /**
+     * The brute-force closest hit: every intersection of the composite, the nearest kept.
+     *
+     * @param geometries the composite
+     * @param ray        the ray
+     * @return the nearest intersection, or null
+     */
+    private static GeoPoint reference(Intersectable geometries, Ray ray) {
+        return ray.findClosestGeoPoint(geometries.findGeoIntersections(ray));
+    }
+
+    /**
+     * The brute-force transmittance: the product of the kT at every intersection up to a distance.
+     *
+     * @param geometries the composite
+     * @param ray        the ray
+     * @param maxT       the distance
+     * @return the product (1 when nothing is crossed)
+     */
+    private static double referenceTransmittance(Intersectable geometries, Ray ray, double maxT) {
+        List<GeoPoint> hits = geometries.findGeoIntersections(ray, maxT);
+        double product = 1;
+        if (hits != null)
+            for (GeoPoint hit : hits)
+                product *= hit.geometry.getMaterial().getKt();
+        return product;
+    }
+
+    /**
+     * The hierarchy's transmittance along a ray.
+     *
+     * @param bvh   the hierarchy (or scan)
+     * @param ray   the ray
+     * @param maxT  the distance
+     * @param minK  the cut-off
+     * @param query the scratch space
+     * @return the transmittance
+     */
+    private static double transmittance(BoundingVolumeHierarchy bvh, Ray ray, double maxT, double minK, Query query) {
+        Point3D p = ray.getP0();
+        Vector d = ray.getDir();
+        return bvh.transmittance(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), maxT, minK, query);
+    }
+
+    /**
+     * Asserts that a hit is the expected one: both null, or the same body (either of two bodies hit
+     * at the same distance) at the same point.
+     *
+     * @param expected the brute-force hit
+     * @param actual   the hit found
+     * @param ray      the ray
+     * @param message  the failure message
+     */
+    private static void assertSameHit(GeoPoint expected, GeoPoint actual, Ray ray, String message) {
+        if (expected == null) {
+            assertNull(actual, message + ": no hit expected for " + ray);
+            return;
+        }
+        assertNotNull(actual, message + ": expected " + expected + " for " + ray);
+        Point3D p0 = ray.getP0();
+        if (actual.geometry != expected.geometry)
+            assertEquals(p0.distance(expected.point), p0.distance(actual.point), TIE,
+                    message + ": another body hit (not a tie) for " + ray + ": expected " + expected + ", got " + actual);
+        assertPoint(expected.point, actual.point, message + " for " + ray);
+    }
+
+    /**
+     * Asserts a point's coordinates within {@link #POINT_DELTA}.
+     *
+     * @param expected the expected point
+     * @param actual   the actual point
+     * @param message  the failure message
+     */
+    private static void assertPoint(Point3D expected, Point3D actual, String message) {
+        assertEquals(expected.getX(), actual.getX(), POINT_DELTA, message + " (x)");
+        assertEquals(expected.getY(), actual.getY(), POINT_DELTA, message + " (y)");
+        assertEquals(expected.getZ(), actual.getZ(), POINT_DELTA, message + " (z)");
+    }
+
+    /**
+     * Asserts that the hierarchy, the linear scan and the brute force all find the expected hit.
+     *
+     * @param geometries the composite
+     * @param ray        the ray
+     * @param expected   the expected point, or null for no hit
+     * @param tc         the test-case label
+     */
+    private static void assertHitEverywhere(Intersectable geometries, Ray ray, Point3D expected, String tc) {
+        for (BoundingVolumeHierarchy bvh : List.of(BoundingVolumeHierarchy.build(geometries),
+                BoundingVolumeHierarchy.scan(geometries))) {
+            GeoPoint hit = bvh.closestHit(ray, bvh.newQuery());
+            if (expected == null)
+                assertNull(hit, tc + ": no hit expected for " + ray);
+            else {
+                assertNotNull(hit, tc + ": a hit expected for " + ray);
+                assertPoint(expected, hit.point, tc + ": wrong hit point");
+            }
+            assertSameHit(reference(geometries, ray), hit, ray, tc + ": differs from the brute force");
+        }
+    }
+
+    // ---------------------------------------------------------------- tests
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#closestHit(Ray, BoundingVolumeHierarchy.Query)}
+     * against the brute force, on 20 random scenes × 500 random rays.
+     */
+    @Test
+    void testClosestHitRandomScenes() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 20 seeded scenes of 1..2000 spheres and triangles (with planes, a tube, cylinders,
+        // squares, bodies that are not Geometry, nested composites, many tiny triangles, all boxes
+        // about one centre): the hierarchy and the scan give the brute-force closest hit of each ray
+        Random rnd = new Random(20240611);
+        int hits = 0;
+        for (int s = 0; s < 20; ++s) {
+            TestScene scene = randomScene(rnd, s);
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries());
+            BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(scene.geometries());
+            Query query = bvh.newQuery();
+            Query scanQuery = scan.newQuery();
+            for (int r = 0; r < 500; ++r) {
+                Ray ray = randomRay(rnd, scene);
+                GeoPoint expected = reference(scene.geometries(), ray);
+                if (expected != null)
+                    ++hits;
+                assertSameHit(expected, bvh.closestHit(ray, query), ray, "TC01: scene " + s + " ray " + r + " (tree)");
+                assertSameHit(expected, scan.closestHit(ray, scanQuery), ray, "TC01: scene " + s + " ray " + r + " (scan)");
+            }
+        }
+        // the rays are aimed so that most of them hit something: the comparison is not vacuous
+        assertTrue(hits > 20 * 500 / 2, "TC01: too few rays hit anything (" + hits + ")");
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#transmittance} on opaque scenes: an any-hit
+     * query, 0 exactly when the closest hit is within the distance.
+     */
+    @Test
+    void testTransmittanceOpaque() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: opaque random scenes, random distances: 0 when the closest hit is at most that far, else 1
+        Random rnd = new Random(77);
+        int blocked = 0;
+        int open = 0;
+        for (int s : new int[] { 0, 2, 5, 6, 8, 9, 12, 13, 15, 17, 19 }) {
+            TestScene scene = randomScene(rnd, s);
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries());
+            BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(scene.geometries());
+            Query query = bvh.newQuery();
+            for (int r = 0; r < 300; ++r) {
+                Ray ray = randomRay(rnd, scene);
+                GeoPoint closest = reference(scene.geometries(), ray);
+                double t = closest == null ? Double.POSITIVE_INFINITY : ray.getP0().distance(closest.point);
+                // random distances, and distances just before and just past the hit
+                double[] distances = { 60 * rnd.nextDouble(), t + 1e-5, Math.max(1e-7, t - 1e-5),
+                        Double.POSITIVE_INFINITY };
+                for (double d : distances) {
+                    if (closest != null && Math.abs(t - d) < MARGIN)
+                        continue;
+                    double expected = closest != null && t <= d ? 0 : 1;
+                    if (expected == 0)
+                        ++blocked;
+                    else
+                        ++open;
+                    String tc = "TC01: scene " + s + " ray " + r + " " + ray + " distance " + d;
+                    assertEquals(expected, transmittance(bvh, ray, d, MIN_K, query), 0, tc + " (tree)");
+                    assertEquals(expected, transmittance(bvh, ray, d, 0, query), 0, tc + " (tree, no cut-off)");
+                    assertEquals(expected, transmittance(scan, ray, d, MIN_K, scan.newQuery()), 0, tc + " (scan)");
+                }
+            }
+        }
+        assertTrue(blocked > 1000 && open > 1000, "TC01: too few blocked (" + blocked + ") or open (" + open + ") rays");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a sphere at distance 4..6 along the ray: distance 4 − 1e-9 gives 1, 4 gives 0 (the hit counts)
+        Geometries one = new Geometries(new Sphere(new Point3D(0, 0, -5), 1));
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(one);
+        Ray down = new Ray(new Point3D(0, 0, 0), new Vector(0, 0, -1));
+        assertEquals(1, transmittance(bvh, down, 4 - 1e-9, MIN_K, bvh.newQuery()), 0, "TC11: hit beyond the distance");
+        assertEquals(0, transmittance(bvh, down, 4, MIN_K, bvh.newQuery()), 0, "TC11: hit at the distance");
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#transmittance} on transparent scenes: the
+     * product of kT over the intersections up to the distance.
+     */
+    @Test
+    void testTransmittanceTransparent() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: random kT (0.5, 0.9, 0.25, 1, some opaque): the product of kT over
+        // findGeoIntersections(ray, d), and 0 below the cut-off; the scan gives the same
+        Random rnd = new Random(4242);
+        double[] kts = { 0.5, 0.9, 0.25, 1, 0.75, 0.999, 0.5, 0.9, 0 };
+        int partial = 0;
+        for (int s : new int[] { 0, 4, 5, 6, 8, 9, 13, 15, 18, 19 }) {
+            TestScene scene = randomScene(rnd, s);
+            for (Intersectable body : scene.bodies())
+                setKt(body, kts, rnd);
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries());
+            BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(scene.geometries());
+            Query query = bvh.newQuery();
+            Query scanQuery = scan.newQuery();
+            for (int r = 0; r < 300; ++r) {
+                Ray ray = randomRay(rnd, scene);
+                double d = rnd.nextInt(8) == 0 ? Double.POSITIVE_INFINITY : 60 * rnd.nextDouble();
+                if (nearAHit(scene.geometries(), ray, d))
+                    continue;
+                double expected = referenceTransmittance(scene.geometries(), ray, d);
+                if (expected > 0 && expected < 1)
+                    ++partial;
+                String tc = "TC01: scene " + s + " ray " + r + " " + ray + " distance " + d;
+                assertEquals(expected, transmittance(bvh, ray, d, 0, query), 1e-12, tc + " (tree)");
+                assertEquals(expected, transmittance(scan, ray, d, 0, scanQuery), 1e-12, tc + " (scan)");
+                double cut = expected < MIN_K ? 0 : expected;
+                assertEquals(cut, transmittance(bvh, ray, d, MIN_K, query), 1e-12, tc + " (tree, cut-off)");
+                assertEquals(cut, transmittance(scan, ray, d, MIN_K, scanQuery), 1e-12, tc + " (scan, cut-off)");
+            }
+        }
+        assertTrue(partial > 500, "TC01: too few rays through transparent bodies (" + partial + ")");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a sphere of kT 0.5 crossed twice and a triangle of kT 0.5 behind it: 0.25 up to the
+        // triangle, 0.125 past it; with the cut-off 0.2 the second is 0
+        Geometries glass = new Geometries(
+                new Sphere(new Point3D(0, 0, -5), 1).setMaterial(new Material().setKt(0.5)),
+                new Triangle(new Point3D(-1, -1, -8), new Point3D(1, -1, -8), new Point3D(0, 1, -8))
+                        .setMaterial(new Material().setKt(0.5)));
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(glass);
+        Ray down = new Ray(new Point3D(0, 0, 0), new Vector(0, 0, -1));
+        assertEquals(0.25, transmittance(bvh, down, 7, 0, bvh.newQuery()), 1e-12, "TC11: two sphere crossings");
+        assertEquals(0.125, transmittance(bvh, down, 8, 0, bvh.newQuery()), 1e-12, "TC11: and the triangle");
+        assertEquals(0, transmittance(bvh, down, 8, 0.2, bvh.newQuery()), 0, "TC11: below the cut-off");
+        // TC12: a ray starting inside the sphere crosses it once: 0.5
+        Ray inside = new Ray(new Point3D(0, 0, -5), new Vector(0, 0, 1));
+        assertEquals(0.5, transmittance(bvh, inside, 10, 0, bvh.newQuery()), 1e-12, "TC12: one crossing from inside");
+    }
+
+    /**
+     * Sets a random kT on a body (on the body inside a wrapper or a composite).
+     *
+     * @param body the body
+     * @param kts  the kT values to draw from
+     * @param rnd  the generator
+     */
+    private static void setKt(Intersectable body, double[] kts, Random rnd) {
+        if (body instanceof Geometry geometry)
+            geometry.setMaterial(new Material().setKt(kts[rnd.nextInt(kts.length)]));
+        else if (body instanceof Wrapper wrapper)
+            setKt(wrapper.inner, kts, rnd);
+        else if (body instanceof Geometries composite)
+            for (Intersectable child : composite.getGeometries())
+                setKt(child, kts, rnd);
+    }
+
+    /**
+     * Whether any intersection of a ray lies within {@link #MARGIN} of a distance.
+     *
+     * @param geometries the composite
+     * @param ray        the ray
+     * @param d          the distance
+     * @return true when the answer would hang on rounding
+     */
+    private static boolean nearAHit(Intersectable geometries, Ray ray, double d) {
+        List<GeoPoint> hits = geometries.findGeoIntersections(ray);
+        if (hits != null)
+            for (GeoPoint hit : hits)
+                if (Math.abs(ray.getP0().distance(hit.point) - d) < MARGIN)
+                    return true;
+        return false;
+    }
+
+    /**
+     * Test method for the shape of the tree: {@link BoundingVolumeHierarchy#getNodesCount()},
+     * {@link BoundingVolumeHierarchy#getDepth()} and {@link BoundingVolumeHierarchy#getBoundedCount()}.
+     */
+    @Test
+    void testStructure() {
+        Random rnd = new Random(5);
+        Ray anyRay = new Ray(new Point3D(0, 0, 100), new Vector(0, 0, -1));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 1000 spread spheres: one node per body at most (2n − 1), an odd count (every inner
+        // node has two children), depth well below the limit of 64
+        Geometries spread = new Geometries();
+        for (int i = 0; i < 1000; ++i)
+            spread.add(randomSphere(rnd, 100, 0.1, 1));
+        BoundingVolumeHierarchy big = BoundingVolumeHierarchy.build(spread);
+        assertEquals(1000, big.getBoundedCount(), "TC01: wrong bounded count");
+        assertTrue(big.getNodesCount() > 1 && big.getNodesCount() <= 2 * 1000 - 1,
+                "TC01: wrong nodes count " + big.getNodesCount());
+        assertEquals(1, big.getNodesCount() % 2, "TC01: a full binary tree has an odd nodes count");
+        assertTrue(big.getDepth() >= 2 && big.getDepth() <= 32, "TC01: depth " + big.getDepth() + " is not well below 64");
+
+        // TC02: planes and tubes stay outside the tree and are not counted; a cylinder is bounded
+        Geometries mixed = new Geometries(new Sphere(new Point3D(0, 0, 0), 1),
+                new Triangle(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)),
+                new Plane(new Point3D(0, 0, -1), new Vector(0, 0, 1)),
+                new Tube(new Ray(Point3D.ZERO, new Vector(1, 0, 0)), 1),
+                new Cylinder(new Ray(Point3D.ZERO, new Vector(0, 1, 0)), 1, 2),
+                new Geometries(new Plane(new Point3D(0, 0, -3), new Vector(0, 1, 1))));
+        BoundingVolumeHierarchy mixedBvh = BoundingVolumeHierarchy.build(mixed);
+        assertEquals(3, mixedBvh.getBoundedCount(), "TC02: planes and tubes must not be counted");
+        assertEquals(1, mixedBvh.getNodesCount(), "TC02: 3 bodies make one leaf");
+
+        // TC03: 5 spheres far apart along x: splitting pays, so more than one node
+        Geometries five = new Geometries();
+        for (int i = 0; i < 5; ++i)
+            five.add(new Sphere(new Point3D(100 * i, 0, 0), 1));
+        BoundingVolumeHierarchy fiveBvh = BoundingVolumeHierarchy.build(five);
+        assertTrue(fiveBvh.getNodesCount() >= 3, "TC03: 5 spread spheres must be split");
+        assertTrue(fiveBvh.getDepth() >= 2, "TC03: 5 spread spheres must be split");
+
+        // TC04: the scan has no tree: 0 nodes, depth 0, nothing in a tree
+        BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(spread);
+        assertEquals(0, scan.getNodesCount(), "TC04: the scan has no nodes");
+        assertEquals(0, scan.getDepth(), "TC04: the scan has no depth");
+        assertEquals(0, scan.getBoundedCount(), "TC04: the scan has nothing in a tree");
+
+        // ===== Boundary Values Tests =====
+        // TC11: an empty composite (also one of empty composites): 0 nodes, depth 0, no hit, transmittance 1
+        for (Geometries empty : List.of(new Geometries(), new Geometries(new Geometries(), new Geometries(new Geometries())))) {
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(empty);
+            assertEquals(0, bvh.getNodesCount(), "TC11: an empty composite has no nodes");
+            assertEquals(0, bvh.getDepth(), "TC11: an empty composite has depth 0");
+            assertEquals(0, bvh.getBoundedCount(), "TC11: an empty composite has no bodies");
+            assertNull(bvh.closestHit(anyRay, bvh.newQuery()), "TC11: an empty composite is never hit");
+            assertEquals(1, transmittance(bvh, anyRay, 1000, MIN_K, bvh.newQuery()), 0, "TC11: nothing blocks the light");
+        }
+
+        // TC12: one body (also given bare, not in a composite): 1 node, depth 1, found
+        Sphere lone = new Sphere(new Point3D(0, 0, 0), 1);
+        for (Intersectable single : List.of(new Geometries(lone), lone)) {
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(single);
+            assertEquals(1, bvh.getNodesCount(), "TC12: one body makes one node");
+            assertEquals(1, bvh.getDepth(), "TC12: one body makes depth 1");
+            assertEquals(1, bvh.getBoundedCount(), "TC12: one body in the tree");
+            GeoPoint hit = bvh.closestHit(anyRay, bvh.newQuery());
+            assertSame(lone, hit.geometry, "TC12: the body must be hit");
+            assertPoint(new Point3D(0, 0, 1), hit.point, "TC12: wrong hit point");
+        }
+
+        // TC13: 2, 3 and 4 bodies, even far apart: one leaf
+        for (int n = 2; n <= 4; ++n) {
+            Geometries few = new Geometries();
+            for (int i = 0; i < n; ++i)
+                few.add(new Sphere(new Point3D(100 * i, 0, 0), 1));
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(few);
+            assertEquals(1, bvh.getNodesCount(), "TC13: " + n + " bodies make one leaf");
+            assertEquals(1, bvh.getDepth(), "TC13: " + n + " bodies make depth 1");
+        }
+
+        // TC14: only unbounded bodies: no tree, yet the plane is hit
+        BoundingVolumeHierarchy planes = BoundingVolumeHierarchy.build(
+                new Geometries(new Plane(new Point3D(0, 0, -1), new Vector(0, 0, 1))));
+        assertEquals(0, planes.getNodesCount(), "TC14: a plane makes no node");
+        assertEquals(0, planes.getBoundedCount(), "TC14: a plane is not bounded");
+        assertPoint(new Point3D(0, 0, -1), planes.closestHit(anyRay, planes.newQuery()).point, "TC14: the plane must be hit");
+
+        // TC15: 2000 bodies whose boxes share one centre cannot be split apart usefully: the tree
+        // stays within the limits and every body is kept
+        TestScene sameCentre = randomScene(rnd, 14);
+        BoundingVolumeHierarchy centred = BoundingVolumeHierarchy.build(sameCentre.geometries());
+        assertEquals(sameCentre.bodies().size(), centred.getBoundedCount(), "TC15: every body must be in the tree");
+        assertTrue(centred.getDepth() <= 64, "TC15: depth over the limit");
+        assertTrue(centred.getNodesCount() <= 2 * centred.getBoundedCount() - 1, "TC15: too many nodes");
+
+        // TC16: the hierarchy is built once: a body added to the composite afterwards is not seen
+        // (build a new hierarchy after changing the scene)
+        Geometries growing = new Geometries(new Sphere(new Point3D(10, 0, 0), 1));
+        BoundingVolumeHierarchy before = BoundingVolumeHierarchy.build(growing);
+        growing.add(new Sphere(new Point3D(0, 0, 0), 1));
+        assertNotNull(growing.findGeoIntersections(anyRay), "TC16: the composite itself sees the new body");
+        assertNull(before.closestHit(anyRay, before.newQuery()), "TC16: the hierarchy must not see a body added after it");
+        assertEquals(1, transmittance(before, anyRay, 1000, MIN_K, before.newQuery()), 0,
+                "TC16: the new body must not block the old hierarchy's light");
+        assertEquals(1, before.getBoundedCount(), "TC16: the count must stay as built");
+        BoundingVolumeHierarchy after = BoundingVolumeHierarchy.build(growing);
+        assertPoint(new Point3D(0, 0, 1), after.closestHit(anyRay, after.newQuery()).point,
+                "TC16: a new hierarchy must see the new body");
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#build(Intersectable)} and
+     * {@link BoundingVolumeHierarchy#scan(Intersectable)} with bad input.
+     */
+    @Test
+    void testBadInput() {
+        // ===== Boundary Values Tests =====
+        // TC11: a null composite
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> BoundingVolumeHierarchy.build(null),
+                "TC11: build(null) must throw"), "geometries", "TC11");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> BoundingVolumeHierarchy.scan(null),
+                "TC11: scan(null) must throw"), "geometries", "TC11");
+    }
+
+    /**
+     * Test method for rays along a coordinate axis: zero direction components make the slab test
+     * divide by zero (±∞, and 0·∞ = NaN on a slab's face).
+     */
+    @Test
+    void testAxisRays() {
+        // a 7×7×7 grid of spheres of radius 0.4 at integer points, and triangles in the planes x = ±3.5
+        Geometries grid = new Geometries();
+        for (int i = -3; i <= 3; ++i)
+            for (int j = -3; j <= 3; ++j)
+                for (int k = -3; k <= 3; ++k)
+                    grid.add(new Sphere(new Point3D(i, j, k), 0.4));
+        grid.add(new Triangle(new Point3D(3.5, -4, -4), new Point3D(3.5, 4, -4), new Point3D(3.5, 0, 4)),
+                new Triangle(new Point3D(-3.5, -4, -4), new Point3D(-3.5, 4, -4), new Point3D(-3.5, 0, 4)));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: down the z axis through a column of spheres: the top sphere at (i, j, 3.4)
+        assertHitEverywhere(grid, new Ray(new Point3D(1, -2, 10), new Vector(0, 0, -1)), new Point3D(1, -2, 3.4), "TC01");
+        // TC02: along −x, direction components −0.0: the triangle at x = 3.5 first, at (3.5, 0, 0)
+        assertHitEverywhere(grid, new Ray(new Point3D(10, 0, 0), new Vector(-1, -0.0, -0.0)), new Point3D(3.5, 0, 0), "TC02");
+        // TC03: along +y between the spheres' columns: no hit
+        assertHitEverywhere(grid, new Ray(new Point3D(0.5, -10, 0.5), new Vector(0, 1, 0)), null, "TC03");
+        // TC04: random rays along the axes, ±0.0 components, from grid points and half-grid points
+        Random rnd = new Random(9);
+        for (int r = 0; r < 600; ++r) {
+            double[] o = new double[3];
+            for (int k = 0; k < 3; ++k)
+                o[k] = rnd.nextInt(3) == 0 ? rnd.nextInt(21) / 2.0 - 5 : 10 * rnd.nextDouble() - 5;
+            int axis = rnd.nextInt(3);
+            double sign = rnd.nextBoolean() ? 1 : -1;
+            double zero = rnd.nextBoolean() ? 0.0 : -0.0;
+            Ray ray = new Ray(new Point3D(o[0], o[1], o[2]),
+                    new Vector(axis == 0 ? sign : zero, axis == 1 ? sign : zero, axis == 2 ? sign : zero));
+            assertHitEverywhere(grid, ray, pointOrNull(reference(grid, ray)), "TC04: ray " + r);
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: a ray along z touching the spheres of the column x = 0, y = 0 (x = 0.4): tangent, no hit
+        assertHitEverywhere(grid, new Ray(new Point3D(0.4, 0, 10), new Vector(0, 0, -1)), null, "TC11");
+        // TC12: a ray down z starting exactly on the top of the grid's box (z = 3.4), on the top of a
+        // sphere: the start does not count, so the sphere's bottom at (0, 0, 2.6)
+        assertHitEverywhere(grid, new Ray(new Point3D(0, 0, 3.4), new Vector(0, 0, -1)), new Point3D(0, 0, 2.6), "TC12");
+        // TC13: the same ray up: it leaves the grid, no hit
+        assertHitEverywhere(grid, new Ray(new Point3D(0, 0, 3.4), new Vector(0, 0, 1)), null, "TC13");
+    }
+
+    /**
+     * The point of a hit, or null.
+     *
+     * @param hit the hit (may be null)
+     * @return its point
+     */
+    private static Point3D pointOrNull(GeoPoint hit) {
+        return hit == null ? null : hit.point;
+    }
+
+    /**
+     * Test method for rays starting exactly on a box face: a closed unit cube of 12 triangles (its box
+     * is the cube) with a sphere inside.
+     */
+    @Test
+    void testRaysOnBoxFaces() {
+        Geometries cube = new Geometries(cube(0, 1));
+        Geometries withBall = new Geometries(cube(0, 1));
+        withBall.add(new Sphere(new Point3D(0.5, 0.5, 0.5), 0.25));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: from the middle of face x = 0 into the cube: the opposite face at (1, 0.5, 0.5)
+        assertHitEverywhere(cube, new Ray(new Point3D(0, 0.5, 0.5), new Vector(1, 0, 0)), new Point3D(1, 0.5, 0.5), "TC01");
+        // TC02: the same with the ball inside: the ball at (0.25, 0.5, 0.5)
+        assertHitEverywhere(withBall, new Ray(new Point3D(0, 0.5, 0.5), new Vector(1, 0, 0)), new Point3D(0.25, 0.5, 0.5), "TC02");
+        // TC03: from the face out of the cube: no hit
+        assertHitEverywhere(withBall, new Ray(new Point3D(0, 0.5, 0.5), new Vector(-1, 0, 0)), null, "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: from face x = 0 along it (x component 0): the edge of face y = 1 at (0, 1, 0.5)
+        assertHitEverywhere(cube, new Ray(new Point3D(0, 0.5, 0.5), new Vector(0, 1, 0)), new Point3D(0, 1, 0.5), "TC11");
+        // TC12: from the plane of face x = 0, outside the cube, along it (−0.0): face y = 1's edge at (0, 1, 0.5)
+        assertHitEverywhere(cube, new Ray(new Point3D(0, 2, 0.5), new Vector(-0.0, -1, 0)), new Point3D(0, 1, 0.5), "TC12");
+        // TC13: from face x = 1 (the box's top in x) along z: the edge of face z = 0 at (1, 0.5, 0)
+        assertHitEverywhere(cube, new Ray(new Point3D(1, 0.5, 0.5), new Vector(0, 0, -1)), new Point3D(1, 0.5, 0), "TC13");
+        // TC14: from a corner of the box along an edge: the other end of the edge, (1, 0, 0)
+        assertHitEverywhere(cube, new Ray(new Point3D(0, 0, 0), new Vector(1, 0, 0)), new Point3D(1, 0, 0), "TC14");
+        // TC15: random rays from random points of the six faces, random directions and along the faces
+        Random rnd = new Random(31);
+        for (int r = 0; r < 300; ++r) {
+            double[] o = { rnd.nextDouble(), rnd.nextDouble(), rnd.nextDouble() };
+            int face = rnd.nextInt(3);
+            o[face] = rnd.nextInt(2);
+            Vector dir = randomUnit(rnd);
+            if (rnd.nextBoolean()) {
+                double[] d = { dir.getX(), dir.getY(), dir.getZ() };
+                d[face] = 0;
+                dir = new Vector(d[0], d[1], d[2]);
+            }
+            Ray ray = new Ray(new Point3D(o[0], o[1], o[2]), dir);
+            assertHitEverywhere(withBall, ray, pointOrNull(reference(withBall, ray)), "TC15: ray " + r);
+        }
+    }
+
+    /**
+     * The 12 triangles of a closed axis-aligned cube.
+     *
+     * @param lo the low corner's coordinates
+     * @param hi the high corner's coordinates
+     * @return the triangles
+     */
+    private static Intersectable[] cube(double lo, double hi) {
+        Point3D[] c = new Point3D[8];
+        for (int i = 0; i < 8; ++i)
+            c[i] = new Point3D((i & 1) == 0 ? lo : hi, (i & 2) == 0 ? lo : hi, (i & 4) == 0 ? lo : hi);
+        int[][] faces = { { 0, 2, 6, 4 }, { 1, 5, 7, 3 }, { 0, 4, 5, 1 }, { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 6, 7, 5 } };
+        List<Intersectable> triangles = new ArrayList<>();
+        for (int[] f : faces) {
+            triangles.add(new Triangle(c[f[0]], c[f[1]], c[f[2]]));
+            triangles.add(new Triangle(c[f[0]], c[f[2]], c[f[3]]));
+        }
+        return triangles.toArray(new Intersectable[0]);
+    }
+
+    /**
+     * Test method for rays through edges and vertices shared by triangles: polygons are closed, so a
+     * mesh has no seams, with or without the tree.
+     */
+    @Test
+    void testSharedEdges() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: two triangles making the square [-1, 1]² at z = 0, split along the diagonal: a ray
+        // straight down through (0.3, 0.3) on the diagonal hits one of them there
+        Triangle lower = new Triangle(new Point3D(-1, -1, 0), new Point3D(1, -1, 0), new Point3D(1, 1, 0));
+        Triangle upper = new Triangle(new Point3D(-1, -1, 0), new Point3D(1, 1, 0), new Point3D(-1, 1, 0));
+        Geometries square = new Geometries(lower, upper);
+        Ray diagonal = new Ray(new Point3D(0.3, 0.3, 5), new Vector(0, 0, -1));
+        assertHitEverywhere(square, diagonal, new Point3D(0.3, 0.3, 0), "TC01");
+        GeoPoint hit = BoundingVolumeHierarchy.build(square).closestHit(diagonal, BoundingVolumeHierarchy.build(square).newQuery());
+        assertTrue(hit.geometry == lower || hit.geometry == upper, "TC01: one of the two triangles must be hit");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a 20 × 20 grid of squares over [-5, 5]² at z = 0 (800 triangles, diagonals alternating):
+        // rays from above and below, slanted, aimed at random points of the grid lines, of the
+        // diagonals and at the vertices, all hit the mesh there
+        int n = 20;
+        double h = 10.0 / n;
+        Geometries mesh = new Geometries();
+        Point3D[][] v = new Point3D[n + 1][n + 1];
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+                v[i][j] = new Point3D(-5 + i * h, -5 + j * h, 0);
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                if ((i + j) % 2 == 0)
+                    mesh.add(new Triangle(v[i][j], v[i + 1][j], v[i + 1][j + 1]),
+                            new Triangle(v[i][j], v[i + 1][j + 1], v[i][j + 1]));
+                else
+                    mesh.add(new Triangle(v[i][j], v[i + 1][j], v[i][j + 1]),
+                            new Triangle(v[i + 1][j], v[i + 1][j + 1], v[i][j + 1]));
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(mesh);
+        BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(mesh);
+        Query query = bvh.newQuery();
+        Random rnd = new Random(12);
+        for (int r = 0; r < 1500; ++r) {
+            int i = rnd.nextInt(n);
+            int j = rnd.nextInt(n);
+            double s = rnd.nextDouble();
+            Point3D target = switch (r % 4) {
+            case 0 -> new Point3D(v[i][j].getX(), -5 + (j + s) * h, 0); // a line x = const
+            case 1 -> new Point3D(-5 + (i + s) * h, v[i][j].getY(), 0); // a line y = const
+            case 2 -> (i + j) % 2 == 0 // the cell's diagonal
+                    ? new Point3D(-5 + (i + s) * h, -5 + (j + s) * h, 0)
+                    : new Point3D(-5 + (i + 1 - s) * h, -5 + (j + s) * h, 0);
+            default -> v[i][j]; // a vertex
+            };
+            Point3D origin = randomPoint(rnd, new Point3D(0, 0, rnd.nextBoolean() ? 8 : -8), 5);
+            Ray ray = r % 5 == 0 ? new Ray(new Point3D(target.getX(), target.getY(), origin.getZ()),
+                    new Vector(0, 0, -Math.signum(origin.getZ()))) : new Ray(origin, target.subtract(origin));
+            String tc = "TC11: ray " + r + " at " + target;
+            GeoPoint treeHit = bvh.closestHit(ray, query);
+            GeoPoint scanHit = scan.closestHit(ray, scan.newQuery());
+            assertNotNull(treeHit, tc + ": the mesh has a seam (tree)");
+            assertNotNull(scanHit, tc + ": the mesh has a seam (scan)");
+            assertPoint(target, treeHit.point, tc + ": wrong hit point (tree)");
+            assertPoint(target, scanHit.point, tc + ": wrong hit point (scan)");
+            assertEquals(0, transmittance(bvh, ray, 100, MIN_K, query), 0, tc + ": the light leaks through a seam");
+        }
+    }
+
+    /**
+     * Test method for rays starting inside a sphere (the box test clamps to the ray's start).
+     */
+    @Test
+    void testRayInsideSphere() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a lone sphere of radius 2, the ray from (0.5, 0, 0) along x: (2, 0, 0)
+        Sphere big = new Sphere(Point3D.ZERO, 2);
+        assertHitEverywhere(new Geometries(big), new Ray(new Point3D(0.5, 0, 0), new Vector(1, 0, 0)), new Point3D(2, 0, 0), "TC01");
+        // TC02: with a small sphere inside it and 200 small spheres around: the small one at (0.75, 0, 0)
+        Random rnd = new Random(3);
+        Geometries crowd = new Geometries(big, new Sphere(new Point3D(1, 0, 0), 0.25));
+        for (int i = 0; i < 200; ++i)
+            crowd.add(new Sphere(randomPoint(rnd, new Point3D(0, 0, 0), 20).add(new Vector(25, 0, 0)), 0.5));
+        assertHitEverywhere(crowd, new Ray(Point3D.ZERO, new Vector(1, 0, 0)), new Point3D(0.75, 0, 0), "TC02");
+        // TC03: from the centre of the big sphere in random directions: the big sphere at distance 2,
+        // or the small one
+        for (int r = 0; r < 200; ++r) {
+            Ray ray = new Ray(new Point3D(-0.5, 0, 0), randomUnit(rnd));
+            assertHitEverywhere(crowd, ray, pointOrNull(reference(crowd, ray)), "TC03: ray " + r);
+            assertNotNull(reference(crowd, ray), "TC03: a ray from inside a sphere must hit");
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: from a point on the lone sphere outward: no hit
+        Geometries lone = new Geometries(big);
+        assertHitEverywhere(lone, new Ray(new Point3D(2, 0, 0), new Vector(1, 0, 0)), null, "TC11");
+        // TC12: from a point on the lone sphere inward: the opposite point (−2, 0, 0)
+        assertHitEverywhere(lone, new Ray(new Point3D(2, 0, 0), new Vector(-1, 0, 0)), new Point3D(-2, 0, 0), "TC12");
+        // TC13: from the centre, the transmittance of an opaque sphere up to 1.9 is 1, up to 2.1 is 0
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(lone);
+        Ray fromCentre = new Ray(Point3D.ZERO, new Vector(0, 1, 0));
+        assertEquals(1, transmittance(bvh, fromCentre, 1.9, MIN_K, bvh.newQuery()), 0, "TC13: not yet at the sphere");
+        assertEquals(0, transmittance(bvh, fromCentre, 2.1, MIN_K, bvh.newQuery()), 0, "TC13: past the sphere");
+    }
+
+    /**
+     * Test method for hits inside a body's tolerance just outside its exact shape: the closed
+     * polygons' edge tolerance and the cylinder's cap tolerance reach past the exact bounding box,
+     * and the tree must find what the brute force finds.
+     */
+    @Test
+    void testToleranceMargins() {
+        // ===== Boundary Values Tests =====
+        // TC11: a sharp triangle (tip at x = −1) hit 3.5e-9 beyond its tip (barycentric tolerance 1e-9)
+        Geometries sharp = new Geometries(new Triangle(new Point3D(-1, 0, 0), new Point3D(1, -0.01, 0), new Point3D(1, 0.01, 0)));
+        Ray pastTip = new Ray(new Point3D(-1 - 3.5e-9, 0, 5), new Vector(0, 0, -1));
+        assertNotNull(reference(sharp, pastTip), "TC11: the triangle's tolerance must take this ray");
+        assertHitEverywhere(sharp, pastTip, new Point3D(-1 - 3.5e-9, 0, 0), "TC11");
+
+        // TC12: the same sliver as a Polygon (edge tolerance 1e-9 of its size): hit 1e-7 beyond its tip
+        Geometries sliver = new Geometries(new Polygon(new Point3D(-1, 0, 0), new Point3D(1, -0.01, 0), new Point3D(1, 0.01, 0)));
+        Ray pastSliver = new Ray(new Point3D(-1 - 1e-7, 0, 5), new Vector(0, 0, -1));
+        assertNotNull(reference(sliver, pastSliver), "TC12: the polygon's tolerance must take this ray");
+        assertHitEverywhere(sliver, pastSliver, new Point3D(-1 - 1e-7, 0, 0), "TC12");
+
+        // TC13: a thin cylinder (radius 1e-3): a ray along its axis 3e-8 outside the rim hits the top cap
+        Geometries thin = new Geometries(new Cylinder(new Ray(Point3D.ZERO, new Vector(0, 0, 1)), 1e-3, 1));
+        Ray pastRim = new Ray(new Point3D(1e-3 + 3e-8, 0, 5), new Vector(0, 0, -1));
+        assertNotNull(reference(thin, pastRim), "TC13: the cap's tolerance must take this ray");
+        assertHitEverywhere(thin, pastRim, new Point3D(1e-3 + 3e-8, 0, 1), "TC13");
+    }
+}
