@@ -36,9 +36,11 @@ public final class BoundingVolumeHierarchy {
     private final Geometry[] unbounded;
     private final Intersectable[] others;
     private final double[] nodeBounds;
-    private final int[] nodeFirst;
-    private final int[] nodeCount;
-    private final int[] nodeAxis;
+    /**
+     * Two ints per node: a leaf's first body and its body count (positive); an inner node's right
+     * child (its left child is the next node) and −1 − its split axis.
+     */
+    private final int[] nodeLinks;
     private int nodesCount;
     private int depth;
 
@@ -71,9 +73,7 @@ public final class BoundingVolumeHierarchy {
         this.others = generic.toArray(new Intersectable[0]);
         int maxNodes = Math.max(1, 2 * bodies.length);
         this.nodeBounds = new double[6 * maxNodes];
-        this.nodeFirst = new int[maxNodes];
-        this.nodeCount = new int[maxNodes];
-        this.nodeAxis = new int[maxNodes];
+        this.nodeLinks = new int[2 * maxNodes];
         if (bodies.length > 0)
             new Builder().build();
     }
@@ -215,15 +215,15 @@ public final class BoundingVolumeHierarchy {
         int node = 0;
         while (true) {
             if (boxHit(node, ox, oy, oz, ix, iy, iz, query.maxT)) {
-                int count = nodeCount[node];
-                if (count == 0) {
-                    int axis = nodeAxis[node];
+                int first = nodeLinks[2 * node];
+                int count = nodeLinks[2 * node + 1];
+                if (count < 0) {
+                    int axis = -1 - count;
                     boolean negative = axis == 0 ? dx < 0 : axis == 1 ? dy < 0 : dz < 0;
-                    stack[top++] = negative ? node + 1 : nodeFirst[node];
-                    node = negative ? nodeFirst[node] : node + 1;
+                    stack[top++] = negative ? node + 1 : first;
+                    node = negative ? first : node + 1;
                     continue;
                 }
-                int first = nodeFirst[node];
                 for (int b = first; b < first + count; ++b)
                     if (!visit(bodies[b], query, ox, oy, oz, dx, dy, dz, transmittance, minK))
                         return false;
@@ -313,16 +313,15 @@ public final class BoundingVolumeHierarchy {
                     : bestSplit(node, start, end, axis, low, extent);
             int middle = bin < 0 ? start : partition(start, end, axis, low, extent, bin);
             if (middle == start || middle == end) {
-                nodeFirst[node] = start;
-                nodeCount[node] = count;
+                nodeLinks[2 * node] = start;
+                nodeLinks[2 * node + 1] = count;
                 return;
             }
-            nodeAxis[node] = axis;
-            nodeCount[node] = 0;
+            nodeLinks[2 * node + 1] = -1 - axis;
             int left = nodesCount++;
             split(left, start, middle, level + 1);
             int right = nodesCount++;
-            nodeFirst[node] = right;
+            nodeLinks[2 * node] = right;
             split(right, middle, end, level + 1);
         }
 

@@ -94,26 +94,18 @@ public class Plane extends Geometry {
 
     @Override
     double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        double t = intersectionDistance(ox, oy, oz, dx, dy, dz);
+        double nv = alignZero(nx * dx + ny * dy + nz * dz);
+        double nq = nx * (qx - ox) + ny * (qy - oy) + nz * (qz - oz);
+        // t = nq / nv lies in (0, maxT] only if nq has the sign of nv and |nq| <= maxT·|nv|: divide only then
+        if (nv == 0 || (nv > 0 ? !(nq > 0 && nq <= maxT * nv) : !(nq < 0 && nq >= maxT * nv)))
+            return NO_HIT;
+        double t = alignZero(nq / nv);
         return t > 0 && t <= maxT ? t : NO_HIT;
     }
 
     @Override
     int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 1 : 0;
-    }
-
-    /**
-     * The distance along a ray (origin o, unit direction d) to this plane.
-     *
-     * @return the distance, or 0 when the ray is parallel to the plane or starts on it, negative when
-     *         the plane is behind the ray
-     */
-    double intersectionDistance(double ox, double oy, double oz, double dx, double dy, double dz) {
-        double nv = alignZero(nx * dx + ny * dy + nz * dz);
-        if (nv == 0)
-            return 0;
-        return alignZero((nx * (qx - ox) + ny * (qy - oy) + nz * (qz - oz)) / nv);
     }
 
     @Override

@@ -153,8 +153,8 @@ public class Polygon extends Geometry {
 
     @Override
     double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        double t = plane.intersectionDistance(ox, oy, oz, dx, dy, dz);
-        if (!(t > 0 && t <= maxT))
+        double t = plane.nearestHit(ox, oy, oz, dx, dy, dz, maxT);
+        if (t == NO_HIT)
             return NO_HIT;
         double px = ox + t * dx;
         double py = oy + t * dy;

@@ -73,6 +73,8 @@ public class Sphere extends Geometry {
         double t1 = root(ox, oy, oz, dx, dy, dz, -1);
         if (t1 > 0)
             return t1 <= maxT ? t1 : NO_HIT;
+        if (Double.isNaN(t1)) // the ray misses the sphere
+            return NO_HIT;
         double t2 = root(ox, oy, oz, dx, dy, dz, 1);
         return inRange(t2, maxT) ? t2 : NO_HIT;
     }

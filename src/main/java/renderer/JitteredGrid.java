@@ -19,6 +19,11 @@ public final class JitteredGrid {
     private final int outlineCount;
     /** The column and row of every cell, in visiting order: cells[2c], cells[2c + 1]. */
     private final int[] cells;
+    private final double cellSize;
+    /** Where each column (or row) of cells starts: n / k. */
+    private final double[] cellStarts;
+    /** The largest coordinate inside each column (or row): just below (n + 1) / k. */
+    private final double[] cellEnds;
 
     /**
      * Creates a grid of k × k cells.
@@ -33,6 +38,13 @@ public final class JitteredGrid {
         this.sqrtSamples = sqrtSamples;
         this.outlineCount = sqrtSamples == 1 ? 1 : 4 * (sqrtSamples - 1);
         this.cells = new int[2 * sqrtSamples * sqrtSamples];
+        this.cellSize = 1.0 / sqrtSamples;
+        this.cellStarts = new double[sqrtSamples];
+        this.cellEnds = new double[sqrtSamples];
+        for (int n = 0; n < sqrtSamples; ++n) {
+            cellStarts[n] = (double) n / sqrtSamples;
+            cellEnds[n] = Math.nextDown((double) (n + 1) / sqrtSamples);
+        }
         int c = visitOutline(0);
         for (int row = 1; row < sqrtSamples - 1; ++row)
             for (int column = 1; column < sqrtSamples - 1; ++column)
@@ -92,10 +104,8 @@ public final class JitteredGrid {
                     + " coordinates, the grid needs " + cells.length);
         for (int i = 0; i < cells.length; ++i) {
             int cell = cells[i];
-            double point = (cell + random.nextDouble()) / sqrtSamples;
             // rounding may carry a draw just below 1 onto the cell's upper edge (1 itself for the last cell)
-            double upper = (double) (cell + 1) / sqrtSamples;
-            points[i] = point < upper ? point : Math.nextDown(upper);
+            points[i] = Math.min(cellStarts[cell] + random.nextDouble() * cellSize, cellEnds[cell]);
         }
     }
 }

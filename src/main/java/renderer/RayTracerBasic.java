@@ -275,9 +275,10 @@ public class RayTracerBasic extends RayTracerBase {
                 double dy = cy + uy * du + vy * dv - py;
                 double dz = cz + uz * du + vz * dv - pz;
                 double distance = Math.sqrt(dx * dx + dy * dy + dz * dz);
-                dx /= distance;
-                dy /= distance;
-                dz /= distance;
+                double inverse = 1 / distance;
+                dx *= inverse;
+                dy *= inverse;
+                dz *= inverse;
                 double side = alignZero(nx * dx + ny * dy + nz * dz);
                 double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
                 ktr += bvh.transmittance(px + offset * nx, py + offset * ny, pz + offset * nz, dx, dy, dz,
