@@ -15,10 +15,13 @@ import static primitives.Util.requireNonNull;
  * hits without testing every body. Built once (per render) from the scene's {@link Geometries},
  * which stays the user-facing composite.
  * <p>
- * The tree lives in flat arrays (a node's box, its first body or right child, its body count and
- * split axis) and is walked with an explicit stack, the nearer child first. It is built top down
- * with the binned surface-area heuristic. Unbounded bodies (planes, tubes) stay outside the tree
- * and are tested on every ray, as are intersectables that are not {@link Geometry}s.
+ * The tree lives in flat arrays (a node's box, its first body or first child, its body count and
+ * split axis; the two children of a node are neighbours) and is walked with an explicit stack: at an
+ * inner node both children's boxes are tested, and the nearer child (by the split axis) is entered
+ * first. It is built top down with the binned surface-area heuristic. Plain {@link Triangle}s are
+ * tested straight from one array of their data in leaf order; other bodies through their own
+ * methods. Unbounded bodies (planes, tubes) stay outside the tree and are tested on every ray, as
+ * are intersectables that are not {@link Geometry}s.
  * <p>
  * Queries take a {@link Query}, the caller's per-thread scratch space, and allocate nothing but
  * the {@link GeoPoint} a closest-hit query returns.
@@ -33,12 +36,16 @@ public final class BoundingVolumeHierarchy {
     private static final double PADDING = 1e-9;
 
     private final Geometry[] bodies;
+    /** Whether each body of the tree is a plain {@link Triangle}, tested from {@link #triangleData}. */
+    private final boolean[] triangle;
+    /** The intersection data of the tree's triangles, {@link Triangle#DATA_LENGTH} doubles per body. */
+    private final double[] triangleData;
     private final Geometry[] unbounded;
     private final Intersectable[] others;
     private final double[] nodeBounds;
     /**
-     * Two ints per node: a leaf's first body and its body count (positive); an inner node's right
-     * child (its left child is the next node) and −1 − its split axis.
+     * Two ints per node: a leaf's first body and its body count (positive); an inner node's left
+     * child (its right child is the node after it) and −1 − its split axis.
      */
     private final int[] nodeLinks;
     private int nodesCount;
@@ -76,6 +83,13 @@ public final class BoundingVolumeHierarchy {
         this.nodeLinks = new int[2 * maxNodes];
         if (bodies.length > 0)
             new Builder().build();
+        this.triangle = new boolean[bodies.length];
+        this.triangleData = new double[Triangle.DATA_LENGTH * bodies.length];
+        for (int b = 0; b < bodies.length; ++b)
+            if (bodies[b].getClass() == Triangle.class) {
+                triangle[b] = true;
+                ((Triangle) bodies[b]).copyData(triangleData, Triangle.DATA_LENGTH * b);
+            }
     }
 
     /**
@@ -210,28 +224,59 @@ public final class BoundingVolumeHierarchy {
         double ix = 1 / dx;
         double iy = 1 / dy;
         double iz = 1 / dz;
+        int nearX = ix < 0 ? 3 : 0;
+        int nearY = iy < 0 ? 3 : 0;
+        int nearZ = iz < 0 ? 3 : 0;
+        if (!boxHit(0, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT))
+            return true;
+        int negative = (dx < 0 ? 1 : 0) | (dy < 0 ? 2 : 0) | (dz < 0 ? 4 : 0);
         int[] stack = query.stack;
         int top = 0;
         int node = 0;
         while (true) {
-            if (boxHit(node, ox, oy, oz, ix, iy, iz, query.maxT)) {
-                int first = nodeLinks[2 * node];
-                int count = nodeLinks[2 * node + 1];
-                if (count < 0) {
-                    int axis = -1 - count;
-                    boolean negative = axis == 0 ? dx < 0 : axis == 1 ? dy < 0 : dz < 0;
-                    stack[top++] = negative ? node + 1 : first;
-                    node = negative ? first : node + 1;
+            int first = nodeLinks[2 * node];
+            int count = nodeLinks[2 * node + 1];
+            if (count < 0) {
+                int near = first + (negative >> (-1 - count) & 1);
+                int far = 2 * first + 1 - near;
+                boolean nearHit = boxHit(near, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT);
+                boolean farHit = boxHit(far, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT);
+                if (nearHit) {
+                    if (farHit)
+                        stack[top++] = far;
+                    node = near;
                     continue;
                 }
+                if (farHit) {
+                    node = far;
+                    continue;
+                }
+            } else
                 for (int b = first; b < first + count; ++b)
-                    if (!visit(bodies[b], query, ox, oy, oz, dx, dy, dz, transmittance, minK))
+                    if (!(triangle[b] ? visitTriangle(b, query, ox, oy, oz, dx, dy, dz, transmittance, minK)
+                            : visit(bodies[b], query, ox, oy, oz, dx, dy, dz, transmittance, minK)))
                         return false;
-            }
             if (top == 0)
                 return true;
             node = stack[--top];
         }
+    }
+
+    /** {@link #visit} for a triangle of the tree, tested from its data; its material is read only on a hit. */
+    private boolean visitTriangle(int b, Query query, double ox, double oy, double oz, double dx, double dy,
+                                  double dz, boolean transmittance, double minK) {
+        double t = Triangle.intersect(triangleData, Triangle.DATA_LENGTH * b, ox, oy, oz, dx, dy, dz, query.maxT);
+        if (t == Geometry.NO_HIT)
+            return true;
+        if (transmittance) {
+            query.ktr *= bodies[b].getMaterial().getKt();
+            return query.ktr > 0 && query.ktr >= minK;
+        }
+        if (t < query.maxT) {
+            query.maxT = t;
+            query.geometry = bodies[b];
+        }
+        return true;
     }
 
     private static boolean visit(Geometry body, Query query, double ox, double oy, double oz,
@@ -254,20 +299,27 @@ public final class BoundingVolumeHierarchy {
      * the high one for a negative component, so for −0.0) and left at the far one. A direction
      * component of ±0 makes the inverse ±∞: a ray outside the slab then gets an empty interval, one
      * inside it (−∞, +∞), and one lying exactly in a face's plane gets 0·∞ = NaN there, which the
-     * comparisons below skip, so the slab (closed) does not restrict the interval.
+     * comparisons below skip, so the slab (closed) does not restrict the interval. The near faces
+     * come precomputed per ray, which keeps the method small enough for the JIT to inline.
+     *
+     * @param nearX the index of the near face's x in a box: 3 (the high face) when ix < 0, else 0
+     * @param nearY the same for y
+     * @param nearZ the same for z
      */
-    private boolean boxHit(int node, double ox, double oy, double oz, double ix, double iy, double iz, double maxT) {
+    private boolean boxHit(int node, double ox, double oy, double oz, double ix, double iy, double iz,
+                           int nearX, int nearY, int nearZ, double maxT) {
+        double[] box = nodeBounds;
         int b = 6 * node;
-        double near = ((ix < 0 ? nodeBounds[b + 3] : nodeBounds[b]) - ox) * ix;
-        double far = ((ix < 0 ? nodeBounds[b] : nodeBounds[b + 3]) - ox) * ix;
+        double near = (box[b + nearX] - ox) * ix;
+        double far = (box[b + 3 - nearX] - ox) * ix;
         near = near > 0 ? near : 0;
         far = far < maxT ? far : maxT;
-        double lo = ((iy < 0 ? nodeBounds[b + 4] : nodeBounds[b + 1]) - oy) * iy;
-        double hi = ((iy < 0 ? nodeBounds[b + 1] : nodeBounds[b + 4]) - oy) * iy;
+        double lo = (box[b + 1 + nearY] - oy) * iy;
+        double hi = (box[b + 4 - nearY] - oy) * iy;
         near = lo > near ? lo : near;
         far = hi < far ? hi : far;
-        lo = ((iz < 0 ? nodeBounds[b + 5] : nodeBounds[b + 2]) - oz) * iz;
-        hi = ((iz < 0 ? nodeBounds[b + 2] : nodeBounds[b + 5]) - oz) * iz;
+        lo = (box[b + 2 + nearZ] - oz) * iz;
+        hi = (box[b + 5 - nearZ] - oz) * iz;
         near = lo > near ? lo : near;
         far = hi < far ? hi : far;
         return near <= far;
@@ -317,12 +369,12 @@ public final class BoundingVolumeHierarchy {
                 nodeLinks[2 * node + 1] = count;
                 return;
             }
+            int left = nodesCount;
+            nodesCount += 2;
+            nodeLinks[2 * node] = left;
             nodeLinks[2 * node + 1] = -1 - axis;
-            int left = nodesCount++;
             split(left, start, middle, level + 1);
-            int right = nodesCount++;
-            nodeLinks[2 * node] = right;
-            split(right, middle, end, level + 1);
+            split(left + 1, middle, end, level + 1);
         }
 
         /** Sets a node's box around bodies [start, end) and returns the box around their centroids. */

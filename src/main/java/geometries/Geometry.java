@@ -80,6 +80,17 @@ public abstract class Geometry extends Intersectable {
     }
 
     /**
+     * A distance if it counts as a hit.
+     *
+     * @param t    a distance along a ray
+     * @param maxT the largest distance that counts
+     * @return t when it lies in (0, maxT], else {@link #NO_HIT}
+     */
+    static double hitWithin(double t, double maxT) {
+        return t > 0 && t <= maxT ? t : NO_HIT;
+    }
+
+    /**
      * The intersection list of a body a ray crosses at most once, from {@link #nearestHit}.
      *
      * @param ray         the ray

@@ -99,8 +99,7 @@ public class Plane extends Geometry {
         // t = nq / nv lies in (0, maxT] only if nq has the sign of nv and |nq| <= maxT·|nv|: divide only then
         if (nv == 0 || (nv > 0 ? !(nq > 0 && nq <= maxT * nv) : !(nq < 0 && nq >= maxT * nv)))
             return NO_HIT;
-        double t = alignZero(nq / nv);
-        return t > 0 && t <= maxT ? t : NO_HIT;
+        return hitWithin(alignZero(nq / nv), maxT);
     }
 
     @Override

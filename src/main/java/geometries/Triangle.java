@@ -12,17 +12,14 @@ public class Triangle extends Polygon {
     /** Tolerance on the barycentric coordinates, so that neighbours sharing an edge leave no seam. */
     private static final double BARYCENTRIC_TOLERANCE = 1e-9;
 
-    private final double p1x;
-    private final double p1y;
-    private final double p1z;
-    private final double e1x;
-    private final double e1y;
-    private final double e1z;
-    private final double e2x;
-    private final double e2y;
-    private final double e2z;
-    /** Below this |determinant| the ray is taken as parallel to the triangle. */
-    private final double parallelLimit;
+    /** The length of a triangle's data in {@link #intersect}'s array. */
+    static final int DATA_LENGTH = 10;
+
+    /**
+     * The data of the intersection test: the first vertex p1, the edges e1 = p2 − p1 and
+     * e2 = p3 − p1, and the |determinant| below which the ray is taken as parallel to the triangle.
+     */
+    private final double[] data;
 
     /**
      * Creates a triangle.
@@ -34,30 +31,62 @@ public class Triangle extends Polygon {
      */
     public Triangle(Point3D p1, Point3D p2, Point3D p3) {
         super(p1, p2, p3);
-        p1x = p1.getX();
-        p1y = p1.getY();
-        p1z = p1.getZ();
-        e1x = p2.getX() - p1x;
-        e1y = p2.getY() - p1y;
-        e1z = p2.getZ() - p1z;
-        e2x = p3.getX() - p1x;
-        e2y = p3.getY() - p1y;
-        e2z = p3.getZ() - p1z;
-        parallelLimit = 1e-12 * Math.sqrt((e1x * e1x + e1y * e1y + e1z * e1z) * (e2x * e2x + e2y * e2y + e2z * e2z));
+        double p1x = p1.getX();
+        double p1y = p1.getY();
+        double p1z = p1.getZ();
+        double e1x = p2.getX() - p1x;
+        double e1y = p2.getY() - p1y;
+        double e1z = p2.getZ() - p1z;
+        double e2x = p3.getX() - p1x;
+        double e2y = p3.getY() - p1y;
+        double e2z = p3.getZ() - p1z;
+        double parallelLimit = 1e-12 * Math.sqrt((e1x * e1x + e1y * e1y + e1z * e1z) * (e2x * e2x + e2y * e2y + e2z * e2z));
+        data = new double[] { p1x, p1y, p1z, e1x, e1y, e1z, e2x, e2y, e2z, parallelLimit };
     }
 
     @Override
     double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        return intersect(data, 0, ox, oy, oz, dx, dy, dz, maxT);
+    }
+
+    /**
+     * Copies the data of the intersection test, so that a caller can keep many triangles in one array.
+     *
+     * @param target the array
+     * @param offset where the {@link #DATA_LENGTH} doubles go
+     */
+    void copyData(double[] target, int offset) {
+        System.arraycopy(data, 0, target, offset, DATA_LENGTH);
+    }
+
+    /**
+     * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle whose data
+     * (see {@link #copyData}) lie in an array. It must stay under the JIT's size limit for inlining
+     * hot methods (325 bytes of bytecode), or every triangle test of the hierarchy becomes a call.
+     *
+     * @param data   the array
+     * @param offset where the triangle's data start
+     * @param maxT   the largest distance that counts
+     * @return the distance t in (0, maxT], or {@link #NO_HIT} when the ray misses
+     */
+    static double intersect(double[] data, int offset, double ox, double oy, double oz, double dx, double dy,
+                            double dz, double maxT) {
+        double e1x = data[offset + 3];
+        double e1y = data[offset + 4];
+        double e1z = data[offset + 5];
+        double e2x = data[offset + 6];
+        double e2y = data[offset + 7];
+        double e2z = data[offset + 8];
         double px = dy * e2z - dz * e2y;
         double py = dz * e2x - dx * e2z;
         double pz = dx * e2y - dy * e2x;
         double det = e1x * px + e1y * py + e1z * pz;
-        if (Math.abs(det) < parallelLimit)
+        if (Math.abs(det) < data[offset + 9])
             return NO_HIT;
         double inv = 1.0 / det;
-        double tx = ox - p1x;
-        double ty = oy - p1y;
-        double tz = oz - p1z;
+        double tx = ox - data[offset];
+        double ty = oy - data[offset + 1];
+        double tz = oz - data[offset + 2];
         double u = (tx * px + ty * py + tz * pz) * inv;
         if (u < -BARYCENTRIC_TOLERANCE || u > 1 + BARYCENTRIC_TOLERANCE)
             return NO_HIT;
@@ -67,8 +96,7 @@ public class Triangle extends Polygon {
         double v = (dx * qx + dy * qy + dz * qz) * inv;
         if (v < -BARYCENTRIC_TOLERANCE || u + v > 1 + BARYCENTRIC_TOLERANCE)
             return NO_HIT;
-        double t = alignZero((e2x * qx + e2y * qy + e2z * qz) * inv);
-        return t > 0 && t <= maxT ? t : NO_HIT;
+        return hitWithin(alignZero((e2x * qx + e2y * qy + e2z * qz) * inv), maxT);
     }
 
     /**
