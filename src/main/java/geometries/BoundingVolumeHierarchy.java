@@ -268,24 +268,29 @@ public final class BoundingVolumeHierarchy {
         double t = Triangle.intersect(triangleData, Triangle.DATA_LENGTH * b, ox, oy, oz, dx, dy, dz, query.maxT);
         if (t == Geometry.NO_HIT)
             return true;
-        if (transmittance) {
-            query.ktr *= bodies[b].getMaterial().getKt();
-            return query.ktr > 0 && query.ktr >= minK;
-        }
-        if (t < query.maxT) {
-            query.maxT = t;
-            query.geometry = bodies[b];
-        }
-        return true;
+        return transmittance ? dim(query, bodies[b].getMaterial().getKt(), minK) : keepNearer(query, t, bodies[b]);
     }
 
+    /**
+     * Tests one body: a transmittance walk multiplies the query's ktr by the body's transparency, a
+     * closest-hit walk keeps the body when it is hit nearer.
+     *
+     * @return false when the transmittance walk must stop (the light is blocked)
+     */
     private static boolean visit(Geometry body, Query query, double ox, double oy, double oz,
                                  double dx, double dy, double dz, boolean transmittance, double minK) {
-        if (transmittance) {
-            query.ktr *= body.transmittance(ox, oy, oz, dx, dy, dz, query.maxT);
-            return query.ktr > 0 && query.ktr >= minK;
-        }
-        double t = body.nearestHit(ox, oy, oz, dx, dy, dz, query.maxT);
+        return transmittance ? dim(query, body.transmittance(ox, oy, oz, dx, dy, dz, query.maxT), minK)
+                : keepNearer(query, body.nearestHit(ox, oy, oz, dx, dy, dz, query.maxT), body);
+    }
+
+    /** Multiplies the query's ktr by a factor; false once the light is blocked (below minK or 0). */
+    private static boolean dim(Query query, double factor, double minK) {
+        query.ktr *= factor;
+        return query.ktr > 0 && query.ktr >= minK;
+    }
+
+    /** Keeps a body hit at distance t when it is nearer than the nearest so far; always true. */
+    private static boolean keepNearer(Query query, double t, Geometry body) {
         if (t < query.maxT) {
             query.maxT = t;
             query.geometry = body;
@@ -384,9 +389,8 @@ public final class BoundingVolumeHierarchy {
             System.arraycopy(emptyBox(), 0, nodeBounds, b, 6);
             for (int i = start; i < end; ++i) {
                 int body = order[i];
+                growBox(nodeBounds, b, boxes, 6 * body);
                 for (int k = 0; k < 3; ++k) {
-                    nodeBounds[b + k] = Math.min(nodeBounds[b + k], boxes[6 * body + k]);
-                    nodeBounds[b + 3 + k] = Math.max(nodeBounds[b + 3 + k], boxes[6 * body + 3 + k]);
                     centroidBox[k] = Math.min(centroidBox[k], centroids[3 * body + k]);
                     centroidBox[3 + k] = Math.max(centroidBox[3 + k], centroids[3 * body + k]);
                 }
@@ -427,7 +431,8 @@ public final class BoundingVolumeHierarchy {
             System.arraycopy(emptyBox(), 0, sweep, 0, 6);
             int leftCount = 0;
             int best = -1;
-            double bestCost = (end - start) * area(nodeBounds, 6 * node) - TRAVERSAL_COST * area(nodeBounds, 6 * node);
+            // split when TRAVERSAL_COST·A + Σ n·A(child) beats the leaf's count·A
+            double bestCost = (end - start - TRAVERSAL_COST) * area(nodeBounds, 6 * node);
             for (int k = 0; k < BINS - 1; ++k) {
                 growBox(sweep, 0, binBoxes, 6 * k);
                 leftCount += binCounts[k];

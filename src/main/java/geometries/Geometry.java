@@ -71,12 +71,24 @@ public abstract class Geometry extends Intersectable {
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when there is none
      */
     double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz)), maxT);
+        Point3D origin = new Point3D(ox, oy, oz);
+        List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(origin, new Vector(dx, dy, dz)), maxT);
         double nearest = NO_HIT;
         if (hits != null)
             for (GeoPoint hit : hits)
-                nearest = Math.min(nearest, hit.point.distance(new Point3D(ox, oy, oz)));
+                nearest = Math.min(nearest, hit.point.distance(origin));
         return nearest;
+    }
+
+    /**
+     * Whether a distance counts as a hit.
+     *
+     * @param t    a distance along a ray
+     * @param maxT the largest distance that counts
+     * @return true when t lies in (0, maxT]
+     */
+    static boolean within(double t, double maxT) {
+        return t > 0 && t <= maxT;
     }
 
     /**
@@ -87,7 +99,7 @@ public abstract class Geometry extends Intersectable {
      * @return t when it lies in (0, maxT], else {@link #NO_HIT}
      */
     static double hitWithin(double t, double maxT) {
-        return t > 0 && t <= maxT ? t : NO_HIT;
+        return within(t, maxT) ? t : NO_HIT;
     }
 
     /**

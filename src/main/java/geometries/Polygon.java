@@ -25,7 +25,7 @@ public class Polygon extends Geometry {
     /** Inward unit normals of the edges within the plane, three doubles per edge. */
     private final double[] edgeNormals;
     /** The vertices' coordinates, three doubles per vertex. */
-    private final double[] vertexCoordinates;
+    final double[] vertexCoordinates;
     /** The largest edge length: the scale of the edge tolerance. */
     private final double size;
 

@@ -57,8 +57,8 @@ public class Sphere extends Geometry {
         Vector dir = ray.getDir();
         double t1 = root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), -1);
         double t2 = root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), 1);
-        boolean hit1 = inRange(t1, maxDistance);
-        boolean hit2 = inRange(t2, maxDistance);
+        boolean hit1 = within(t1, maxDistance);
+        boolean hit2 = within(t2, maxDistance);
         if (hit1 && hit2)
             return List.of(new GeoPoint(this, ray.getPoint(t1)), new GeoPoint(this, ray.getPoint(t2)));
         if (hit1)
@@ -72,17 +72,16 @@ public class Sphere extends Geometry {
     double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         double t1 = root(ox, oy, oz, dx, dy, dz, -1);
         if (t1 > 0)
-            return t1 <= maxT ? t1 : NO_HIT;
+            return hitWithin(t1, maxT);
         if (Double.isNaN(t1)) // the ray misses the sphere
             return NO_HIT;
-        double t2 = root(ox, oy, oz, dx, dy, dz, 1);
-        return inRange(t2, maxT) ? t2 : NO_HIT;
+        return hitWithin(root(ox, oy, oz, dx, dy, dz, 1), maxT);
     }
 
     @Override
     int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        return (inRange(root(ox, oy, oz, dx, dy, dz, -1), maxT) ? 1 : 0)
-                + (inRange(root(ox, oy, oz, dx, dy, dz, 1), maxT) ? 1 : 0);
+        return (within(root(ox, oy, oz, dx, dy, dz, -1), maxT) ? 1 : 0)
+                + (within(root(ox, oy, oz, dx, dy, dz, 1), maxT) ? 1 : 0);
     }
 
     @Override
@@ -104,10 +103,6 @@ public class Sphere extends Geometry {
         double tm = ux * dx + uy * dy + uz * dz;
         double thSquared = alignZero(radiusSquared - (ux * ux + uy * uy + uz * uz - tm * tm));
         return thSquared <= 0 ? Double.NaN : alignZero(tm + sign * Math.sqrt(thSquared));
-    }
-
-    private static boolean inRange(double t, double maxT) {
-        return t > 0 && t <= maxT;
     }
 
     @Override

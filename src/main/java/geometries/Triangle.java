@@ -107,9 +107,9 @@ public class Triangle extends Polygon {
     double[] bounds() {
         double[] box = new double[6];
         for (int k = 0; k < 3; ++k) {
-            double a = coordinate(vertices.get(0), k);
-            double b = coordinate(vertices.get(1), k);
-            double c = coordinate(vertices.get(2), k);
+            double a = vertexCoordinates[k];
+            double b = vertexCoordinates[3 + k];
+            double c = vertexCoordinates[6 + k];
             double ca = a + BARYCENTRIC_TOLERANCE * ((a - b) + (a - c));
             double cb = b + BARYCENTRIC_TOLERANCE * ((b - a) + (b - c));
             double cc = c + BARYCENTRIC_TOLERANCE * ((c - a) + (c - b));
@@ -117,10 +117,6 @@ public class Triangle extends Polygon {
             box[3 + k] = Math.max(Math.max(a, Math.max(b, c)), Math.max(ca, Math.max(cb, cc)));
         }
         return box;
-    }
-
-    private static double coordinate(Point3D point, int axis) {
-        return axis == 0 ? point.getX() : axis == 1 ? point.getY() : point.getZ();
     }
 
     @Override

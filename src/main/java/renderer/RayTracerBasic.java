@@ -168,8 +168,9 @@ public class RayTracerBasic extends RayTracerBase {
         Vector lightDirection = l.scale(-1); // from the point to the light
         if (isSoftShadows() && light instanceof AreaLightSource areaLight && areaLight.getEdges() > 0)
             return calcSoftShadows(areaLight, lightDirection, n, geoPoint);
-        ++threadState().shadowRays;
-        return visibility(light.getDistance(geoPoint.point), new Ray(geoPoint.point, lightDirection, n), geoPoint);
+        ThreadState state = threadState();
+        ++state.shadowRays;
+        return visibility(light.getDistance(geoPoint.point), new Ray(geoPoint.point, lightDirection, n), state);
     }
 
     /**
@@ -187,7 +188,7 @@ public class RayTracerBasic extends RayTracerBase {
     double calcSoftShadows(AreaLightSource light, Vector lightDirection, Vector n, GeoPoint geoPoint) {
         ThreadState state = threadState();
         Point3D point = geoPoint.point;
-        double ktr = visibility(light.getDistance(point), new Ray(point, lightDirection, n), geoPoint);
+        double ktr = visibility(light.getDistance(point), new Ray(point, lightDirection, n), state);
         JitteredGrid grid = getBeamGrid();
         double[] samples = state.points(grid);
         grid.sample(state.random, samples);
@@ -294,14 +295,14 @@ public class RayTracerBasic extends RayTracerBase {
      *
      * @param lightDistance the distance from the point to the light (or the light's sample point)
      * @param lightRay      the shadow ray, its head already moved off the surface
-     * @param geoPoint      the lit point
+     * @param state         the calling thread's state (its query scratch space)
      * @return the transparency in [0, 1]
      */
-    double visibility(double lightDistance, Ray lightRay, GeoPoint geoPoint) {
+    private double visibility(double lightDistance, Ray lightRay, ThreadState state) {
         BoundingVolumeHierarchy bvh = accelerator();
         Point3D p0 = lightRay.getP0();
         Vector dir = lightRay.getDir();
         return bvh.transmittance(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), lightDistance,
-                MIN_CALC_COLOR_K, threadState().query(bvh));
+                MIN_CALC_COLOR_K, state.query(bvh));
     }
 }
