@@ -17,7 +17,6 @@ import primitives.Point3D;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.ImageWriter;
-import renderer.RayTracerBasic;
 import renderer.Render;
 import scene.Scene;
 
@@ -27,7 +26,6 @@ import scene.Scene;
 public final class Gallery {
     private static final Color BLUE = new Color(java.awt.Color.BLUE);
     private static final Color WHITE = new Color(java.awt.Color.WHITE);
-    private static final Color YELLOW = new Color(java.awt.Color.YELLOW);
 
     private Gallery() {
     }
@@ -82,16 +80,7 @@ public final class Gallery {
      * @return the render, its image still in memory for a look at the pixels
      */
     public static Render render(Picture picture, Path folder) {
-        Render render = new Render()
-                .setImageWriter(new ImageWriter(picture.name(), picture.nX(), picture.nY(), folder))
-                .setCamera(picture.camera())
-                .setRayTracer(new RayTracerBasic(picture.scene()))
-                .setSoftShadows(picture.softShadows());
-        render.renderImage();
-        if (picture.gridInterval() > 0)
-            render.printGrid(picture.gridInterval(), YELLOW);
-        render.writeToImage();
-        return render;
+        return picture.render(picture.newRender(folder.resolve(picture.name() + ImageWriter.EXTENSION)));
     }
 
     private static Camera frontCamera(double z, double vpSize) {
@@ -111,7 +100,7 @@ public final class Gallery {
                 new Triangle(new Point3D(100, 0, -100), new Point3D(0, -100, -100), new Point3D(100, -100, -100)));
         Camera camera = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0))
                 .setVpDistance(100).setVpSize(500, 500);
-        return new Picture("baseRenderTwoColors", 1000, 1000, scene, camera, 100, false);
+        return new Picture("baseRenderTwoColors", 1000, 1000, scene, camera, 100, RenderSettings.DEFAULT);
     }
 
     private static Picture lights(String name, Scene scene, Camera camera, LightSource light) {

@@ -1,22 +1,49 @@
 package app;
 
+import java.io.PrintWriter;
 import java.nio.file.Path;
 
 import renderer.ImageWriter;
 
 /**
- * The command-line entry point: with no arguments it renders the example gallery into {@code images/}.
+ * The command-line entry point: with no arguments it renders the example gallery into {@code images/};
+ * with arguments it runs the {@link RenderCommand render command} ({@code render SCENE.xml [options]},
+ * see {@code --help}).
  */
 public final class Main {
     private Main() {
     }
 
     /**
-     * Renders the gallery.
+     * Renders the gallery, or runs the render command and exits with its exit code.
      *
-     * @param args none
+     * @param args none for the gallery, or the render command's arguments
      */
     public static void main(String[] args) {
+        if (args.length == 0) {
+            renderGallery();
+            return;
+        }
+        System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true),
+                System.console() != null));
+    }
+
+    /**
+     * Runs the render command in this process.
+     *
+     * @param args     the command's arguments
+     * @param out      where the command's results and help go
+     * @param err      where its progress bar and error messages go
+     * @param terminal true when the error stream is a terminal (the progress bar redraws its line)
+     * @return the exit code: 0 on success, 1 when the image cannot be written, 2 on bad arguments or a
+     * bad scene file
+     */
+    static int run(String[] args, PrintWriter out, PrintWriter err, boolean terminal) {
+        return RenderCommand.newCommandLine(terminal).setOut(out).setErr(err).execute(args);
+    }
+
+    /** Renders every picture of the gallery into {@code images/}. */
+    private static void renderGallery() {
         Path folder = ImageWriter.DEFAULT_FOLDER;
         for (Picture picture : Gallery.pictures()) {
             long start = System.nanoTime();

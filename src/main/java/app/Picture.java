@@ -1,12 +1,18 @@
 package app;
 
+import java.nio.file.Path;
+
+import primitives.Color;
 import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.RayTracerBasic;
+import renderer.Render;
 import scene.Scene;
 
 import static primitives.Util.requireNonNull;
 
 /**
- * One picture of the gallery: a scene, the camera that looks at it, and the image's name and size.
+ * One picture: a scene, the camera that looks at it, the image's name and size, and how it is rendered.
  *
  * @param name         the image's file name, without extension
  * @param nX           the number of columns
@@ -14,14 +20,19 @@ import static primitives.Util.requireNonNull;
  * @param scene        the scene
  * @param camera       the camera
  * @param gridInterval the distance in pixels between grid lines drawn over the picture, 0 for none
- * @param softShadows  whether lights with an area cast soft shadows
+ * @param settings     soft shadows, anti-aliasing and the seed
  */
-public record Picture(String name, int nX, int nY, Scene scene, Camera camera, int gridInterval, boolean softShadows) {
+public record Picture(String name, int nX, int nY, Scene scene, Camera camera, int gridInterval,
+                      RenderSettings settings) {
+    /** The colour of the grid lines. */
+    public static final Color GRID_COLOR = new Color(java.awt.Color.YELLOW);
+
     /** Checks the parts. */
     public Picture {
         requireNonNull(name, "picture name");
         requireNonNull(scene, "picture scene");
         requireNonNull(camera, "picture camera");
+        requireNonNull(settings, "picture render settings");
         if (nX <= 0 || nY <= 0)
             throw new IllegalArgumentException("picture size must be positive, got " + nX + "x" + nY);
         if (gridInterval < 0)
@@ -29,7 +40,7 @@ public record Picture(String name, int nX, int nY, Scene scene, Camera camera, i
     }
 
     /**
-     * A picture with no grid.
+     * A picture with no grid and the default settings.
      *
      * @param name   the image's file name, without extension
      * @param nX     the number of columns
@@ -38,7 +49,7 @@ public record Picture(String name, int nX, int nY, Scene scene, Camera camera, i
      * @param camera the camera
      */
     public Picture(String name, int nX, int nY, Scene scene, Camera camera) {
-        this(name, nX, nY, scene, camera, 0, false);
+        this(name, nX, nY, scene, camera, 0, RenderSettings.DEFAULT);
     }
 
     /**
@@ -48,6 +59,59 @@ public record Picture(String name, int nX, int nY, Scene scene, Camera camera, i
      * @return the soft-shadow picture
      */
     public Picture withSoftShadows(String softName) {
-        return new Picture(softName, nX, nY, scene, camera, gridInterval, true);
+        return new Picture(softName, nX, nY, scene, camera, gridInterval, settings.withSoftShadows(true));
+    }
+
+    /**
+     * The same picture rendered another way.
+     *
+     * @param newSettings the settings
+     * @return the picture with these settings
+     */
+    public Picture withSettings(RenderSettings newSettings) {
+        return new Picture(name, nX, nY, scene, camera, gridInterval, newSettings);
+    }
+
+    /**
+     * The same picture at another size (the camera's view plane is unchanged).
+     *
+     * @param width  the number of columns
+     * @param height the number of rows
+     * @return the picture at this size
+     */
+    public Picture withSize(int width, int height) {
+        return new Picture(name, width, height, scene, camera, gridInterval, settings);
+    }
+
+    /**
+     * A render of this picture, ready to run: its image, camera, ray tracer and settings are set.
+     *
+     * @param file the PNG file the image goes to; its name must end with {@code .png}
+     * @return the render
+     */
+    public Render newRender(Path file) {
+        String fileName = requireNonNull(file, "image file").getFileName().toString();
+        if (!fileName.endsWith(ImageWriter.EXTENSION))
+            throw new IllegalArgumentException("image file name must end with " + ImageWriter.EXTENSION + ": " + file);
+        Path folder = file.toAbsolutePath().getParent();
+        String imageName = fileName.substring(0, fileName.length() - ImageWriter.EXTENSION.length());
+        Render render = new Render().setImageWriter(new ImageWriter(imageName, nX, nY, folder))
+                .setCamera(camera).setRayTracer(new RayTracerBasic(scene));
+        return settings.applyTo(render);
+    }
+
+    /**
+     * Runs a render made by {@link #newRender(Path)}, draws the grid when the picture has one, and
+     * writes the PNG file.
+     *
+     * @param render the render, perhaps with more settings (threads, progress) than newRender gave it
+     * @return the render, its image still in memory for a look at the pixels
+     */
+    public Render render(Render render) {
+        render.renderImage();
+        if (gridInterval > 0)
+            render.printGrid(gridInterval, GRID_COLOR);
+        render.writeToImage();
+        return render;
     }
 }

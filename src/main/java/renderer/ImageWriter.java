@@ -19,6 +19,8 @@ import static primitives.Util.requireNonNull;
 public class ImageWriter {
     /** The folder images go to unless another is given. */
     public static final Path DEFAULT_FOLDER = Path.of("images");
+    /** The extension of the files images are written to. */
+    public static final String EXTENSION = ".png";
 
     private final String imageName;
     private final Path folder;
@@ -69,7 +71,7 @@ public class ImageWriter {
 
     /** @return the file the image is written to */
     public Path getPath() {
-        return folder.resolve(imageName + ".png");
+        return folder.resolve(imageName + EXTENSION);
     }
 
     /**

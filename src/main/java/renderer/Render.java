@@ -2,6 +2,8 @@ package renderer;
 
 import java.util.MissingResourceException;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.LongConsumer;
 
 import primitives.Color;
 
@@ -25,6 +27,7 @@ public class Render {
     private int threadsCount = Runtime.getRuntime().availableProcessors();
     private boolean debugPrint;
     private JitteredGrid pixelGrid;
+    private LongConsumer progressListener;
 
     /**
      * Sets the image to render into.
@@ -62,6 +65,11 @@ public class Render {
     public Render setRayTracer(RayTracerBase rayTracer) {
         this.rayTracer = requireNonNull(rayTracer, "ray tracer");
         return this;
+    }
+
+    /** @return the ray tracer (null until set) */
+    public RayTracerBase getRayTracer() {
+        return rayTracer;
     }
 
     /**
@@ -161,6 +169,19 @@ public class Render {
     }
 
     /**
+     * Sets a listener told of the progress of a render: after each tile of pixels, a rendering thread
+     * calls it with the number of pixels rendered so far (the last call gives nX × nY). Calls come
+     * from several threads, so the listener must be thread-safe.
+     *
+     * @param progressListener the listener, or null for none
+     * @return this render
+     */
+    public Render setProgressListener(LongConsumer progressListener) {
+        this.progressListener = progressListener;
+        return this;
+    }
+
+    /**
      * Renders the picture into the image (call {@link #writeToImage()} to save it).
      *
      * @throws MissingResourceException naming the image writer, camera or ray tracer when it is not set
@@ -222,6 +243,7 @@ public class Render {
         private final int tilesCount = tilesX * ((nY + TILE - 1) / TILE);
         private final AtomicInteger nextTile = new AtomicInteger();
         private final AtomicInteger tilesDone = new AtomicInteger();
+        private final AtomicLong pixelsDone = new AtomicLong();
         private volatile RuntimeException failure;
 
         void run() {
@@ -254,15 +276,18 @@ public class Render {
             try {
                 for (int tile = nextTile.getAndIncrement(); tile < tilesCount && failure == null;
                      tile = nextTile.getAndIncrement()) {
-                    renderTile(tile);
+                    long pixels = renderTile(tile);
                     tilesDone.incrementAndGet();
+                    if (progressListener != null)
+                        progressListener.accept(pixelsDone.addAndGet(pixels));
                 }
             } catch (RuntimeException e) {
                 failure = e;
             }
         }
 
-        private void renderTile(int tile) {
+        /** Renders one tile and returns its number of pixels. */
+        private long renderTile(int tile) {
             int x0 = (tile % tilesX) * TILE;
             int y0 = (tile / tilesX) * TILE;
             int x1 = Math.min(x0 + TILE, nX);
@@ -271,6 +296,7 @@ public class Render {
             for (int i = y0; i < y1; ++i)
                 for (int j = x0; j < x1; ++j)
                     imageWriter.writePixel(j, i, renderPixel(j, i, points));
+            return (long) (x1 - x0) * (y1 - y0);
         }
 
         /** The colour of a pixel: one ray through its centre, or the average of its jittered rays. */

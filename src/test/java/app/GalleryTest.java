@@ -1,6 +1,7 @@
 package app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -141,5 +142,54 @@ class GalleryTest {
         // ===== Boundary Values Tests =====
         // TC11: the two renders are not the same noise: many single pixels differ
         assertTrue(penumbraPixels > 1000, "TC11: expected the report's and our noise to differ, " + penumbraPixels);
+    }
+
+    /**
+     * Test method for {@link Gallery#pictures()} and {@link SceneLoader#load(Path)}: every picture of the
+     * gallery has its scene file {@code scenes/<name>.xml}, which loads into the same picture (name, size,
+     * grid, settings) and renders, at a quarter of the size, exactly the pixels of the Java picture.
+     */
+    @Test
+    void testSceneFilesMatchPictures() throws IOException {
+        Path quarterFolder = Path.of("target", "test-images", "gallery-files");
+        // ===== Equivalence Partitions Tests =====
+        // TC01: for each of the 17 pictures, the scene file exists and loads into the same picture
+        for (Picture picture : Gallery.pictures()) {
+            Path file = Path.of("scenes", picture.name() + ".xml");
+            assertTrue(Files.isRegularFile(file), "TC01: missing scene file " + file);
+            Picture loaded = SceneLoader.load(file);
+            assertEquals(picture.name(), loaded.name(), "TC01: wrong name in " + file);
+            assertEquals(picture.nX(), loaded.nX(), "TC01: wrong width in " + file);
+            assertEquals(picture.nY(), loaded.nY(), "TC01: wrong height in " + file);
+            assertEquals(picture.gridInterval(), loaded.gridInterval(), "TC01: wrong grid in " + file);
+            assertEquals(picture.settings(), loaded.settings(), "TC01: wrong render settings in " + file);
+            // TC02: at a quarter of the size, the loaded picture renders exactly the Java picture's pixels
+            int width = picture.nX() / 4;
+            int height = picture.nY() / 4;
+            ImageWriter java = quarter(picture, width, height, quarterFolder.resolve("java"));
+            ImageWriter fromFile = quarter(loaded, width, height, quarterFolder.resolve("file"));
+            int different = 0;
+            for (int y = 0; y < height; ++y)
+                for (int x = 0; x < width; ++x)
+                    if (!java.getPixel(x, y).equals(fromFile.getPixel(x, y)))
+                        ++different;
+            assertEquals(0, different, "TC02: " + file + " renders " + different + " pixels unlike its Java picture");
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: the course's first picture uses the schema's default camera, so its file has no <camera>,
+        // and it still loads the course's camera: at (0, 0, 0) looking to -z, 500 × 500 at distance 100
+        Path twoColors = Path.of("scenes", "baseRenderTwoColors.xml");
+        assertFalse(Files.readString(twoColors).contains("<camera"), "TC11: the default camera should not be written");
+        renderer.Camera camera = SceneLoader.load(twoColors).camera();
+        assertEquals(new primitives.Point3D(0, 0, 0), camera.getP0(), "TC11: wrong camera position");
+        assertEquals(new primitives.Vector(0, 0, -1), camera.getVTo(), "TC11: wrong camera vTo");
+        assertEquals(500, camera.getWidth(), 0, "TC11: wrong view plane width");
+        assertEquals(100, camera.getDistance(), 0, "TC11: wrong view plane distance");
+    }
+
+    /** Renders a picture at another size into a folder. */
+    private static ImageWriter quarter(Picture picture, int width, int height, Path folder) {
+        return Gallery.render(picture.withSize(width, height), folder).getImageWriter();
     }
 }

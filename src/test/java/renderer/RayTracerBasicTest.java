@@ -489,7 +489,7 @@ class RayTracerBasicTest {
         ImageWriter image = new ImageWriter(picture.name() + (bruteForce ? "-scan" : "-bvh"), picture.nX() / 4,
                 picture.nY() / 4, PICTURE_FOLDER.resolve("acceleration"));
         Render render = new Render().setImageWriter(image).setCamera(picture.camera()).setRayTracer(tracer)
-                .setSoftShadows(picture.softShadows());
+                .setSoftShadows(picture.settings().softShadows());
         render.renderImage();
         return image;
     }

@@ -510,4 +510,81 @@ class RenderTest {
         forwarded.writeToImage();
         assertSamePicture(seeded, forwarded, "TC11: setSeed on the render must act as on the ray tracer");
     }
+
+    /** Test method for {@link Render#setProgressListener(java.util.function.LongConsumer)}. */
+    @Test
+    void testSetProgressListener() {
+        // 50 × 40 pixels in 16 × 16 tiles: 4 columns of tiles (16, 16, 16, 2 wide) and 3 rows (16, 16, 8 high)
+        Scene scene = new Scene("progress").setBackground(BACKGROUND);
+        java.util.Queue<Long> calls = new java.util.concurrent.ConcurrentLinkedQueue<>();
+        Render render = new Render().setImageWriter(new ImageWriter("progress", 50, 40, FOLDER))
+                .setCamera(topCamera()).setRayTracer(new RayTracerBasic(scene)).setMultithreading(2);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the setter returns the render; 2 threads call the listener once per tile (12 calls)
+        assertSame(render, render.setProgressListener(calls::add), "TC01: setProgressListener must return the render");
+        render.renderImage();
+        java.util.List<Long> values = new java.util.ArrayList<>(calls);
+        assertEquals(12, values.size(), "TC01: the listener must be called once per tile (4 × 3)");
+        // TC02: every value is in (0, 2000], all distinct, and the largest is 50·40 = 2000
+        for (long v : values)
+            assertTrue(v > 0 && v <= 2000, "TC02: pixels done must be in (0, 2000], got " + v);
+        assertEquals(12, new java.util.HashSet<>(values).size(), "TC02: the values must be distinct: " + values);
+        assertEquals(2000L, java.util.Collections.max(values), "TC02: the last count must be 50·40 = 2000");
+        // TC03: the steps between the sorted values are the tiles' sizes: 256 ×6, 32 ×2, 128 ×3, 16 ×1
+        java.util.Collections.sort(values);
+        java.util.List<Long> steps = new java.util.ArrayList<>();
+        long previous = 0;
+        for (long v : values) {
+            steps.add(v - previous);
+            previous = v;
+        }
+        java.util.Collections.sort(steps);
+        assertEquals(java.util.List.of(16L, 32L, 32L, 128L, 128L, 128L, 256L, 256L, 256L, 256L, 256L, 256L), steps,
+                "TC03: the counts must grow by one tile's pixels at a time");
+        // TC04: the picture is rendered: a pixel is the background
+        assertEquals(new java.awt.Color(20, 40, 60), render.getImageWriter().getPixel(49, 39),
+                "TC04: the last pixel must be rendered");
+
+        // ===== Boundary Values Tests =====
+        // TC11: 1 thread: the counts are the running sums in tile order
+        calls.clear();
+        render.setMultithreading(1).renderImage();
+        assertEquals(java.util.List.of(256L, 512L, 768L, 800L, 1056L, 1312L, 1568L, 1600L, 1728L, 1856L, 1984L, 2000L),
+                new java.util.ArrayList<>(calls), "TC11: with 1 thread the counts must be the running sums");
+        // TC12: a null listener is allowed: the render works and the old listener is no longer called
+        calls.clear();
+        assertSame(render, render.setProgressListener(null), "TC12: setProgressListener(null) must return the render");
+        render.setMultithreading(2).renderImage();
+        assertTrue(calls.isEmpty(), "TC12: a removed listener must not be called");
+        assertEquals(new java.awt.Color(20, 40, 60), render.getImageWriter().getPixel(0, 0),
+                "TC12: the render must work without a listener");
+        // TC13: a 1 × 1 picture: one call with 1 pixel
+        java.util.List<Long> one = new java.util.concurrent.CopyOnWriteArrayList<>();
+        new Render().setImageWriter(new ImageWriter("progress1", 1, 1, FOLDER)).setCamera(topCamera())
+                .setRayTracer(new RayTracerBasic(scene)).setMultithreading(2).setProgressListener(one::add)
+                .renderImage();
+        assertEquals(java.util.List.of(1L), one, "TC13: a 1 × 1 picture must report 1 pixel once");
+    }
+
+    /** Test method for {@link Render#getRayTracer()}. */
+    @Test
+    void testGetRayTracer() {
+        Render render = new Render();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the ray tracer set is returned
+        RayTracerBase tracer = new RayTracerBasic(floorScene("get ray tracer"));
+        render.setRayTracer(tracer);
+        assertSame(tracer, render.getRayTracer(), "TC01: getRayTracer must return the ray tracer set");
+        // TC02: setting another one replaces it
+        RayTracerBase other = new RayTracerBasic(floorScene("other ray tracer"));
+        render.setRayTracer(other);
+        assertSame(other, render.getRayTracer(), "TC02: getRayTracer must return the last ray tracer set");
+
+        // ===== Boundary Values Tests =====
+        // TC11: before setRayTracer: null
+        org.junit.jupiter.api.Assertions.assertNull(new Render().getRayTracer(),
+                "TC11: getRayTracer must be null before it is set");
+    }
 }

@@ -1,0 +1,316 @@
+package app;
+
+import java.io.PrintWriter;
+import java.io.UncheckedIOException;
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.function.LongConsumer;
+
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import me.tongfei.progressbar.ProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBarStyle;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import renderer.ImageWriter;
+import renderer.RayTracerBase;
+import renderer.Render;
+
+/**
+ * The {@code render} command: renders a scene file to a PNG image, with a progress bar on the error
+ * stream, and prints the elapsed time and the ray counts. Options that are not given keep the scene
+ * file's settings. Exit codes: 0 on success, 1 when the image cannot be written, 2 on bad arguments or a
+ * bad scene file.
+ */
+@Command(name = "render", mixinStandardHelpOptions = true, version = "render (ray tracer) 1.0",
+        sortOptions = false, usageHelpAutoWidth = true,
+        description = "Renders a scene file (XML, see the README) to a PNG image.",
+        footerHeading = "%nExit codes:%n",
+        footer = {"  0  the image is written",
+                "  1  the image cannot be written",
+                "  2  bad arguments or a bad scene file"})
+public class RenderCommand implements Callable<Integer> {
+    /** Exit code: the image is written. */
+    public static final int OK = 0;
+    /** Exit code: the image cannot be written (or another failure while rendering). */
+    public static final int FAILURE = 1;
+    /** Exit code: bad arguments or a bad scene file. */
+    public static final int BAD_INPUT = 2;
+
+    /** The width in characters of the progress bar's line. */
+    private static final int BAR_WIDTH = 79;
+    /** How often the bar is redrawn on a terminal, in milliseconds. */
+    private static final int TERMINAL_UPDATE_MS = 200;
+    /** How often a bar line is printed when the error stream is not a terminal, in milliseconds. */
+    private static final int LOG_UPDATE_MS = 10_000;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "SCENE.xml", description = "the scene file")
+    private Path sceneFile;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "FILE.png",
+            description = "the image file (default: the scene file's name with .png instead of .xml, "
+                    + "in the current directory)")
+    private Path output;
+
+    @Option(names = "--width", paramLabel = "W",
+            description = "the image's width in pixels (default: the scene file's; given alone, the height "
+                    + "follows the scene's aspect ratio)")
+    private Integer width;
+
+    @Option(names = "--height", paramLabel = "H",
+            description = "the image's height in pixels (default: the scene file's; given alone, the width "
+                    + "follows the scene's aspect ratio)")
+    private Integer height;
+
+    @Option(names = "--soft-shadows", negatable = true,
+            description = "soft shadows from lights with an edge size, or hard shadows (default: the scene file's)")
+    private Boolean softShadows;
+
+    @Option(names = "--adaptive", negatable = true,
+            description = "adaptive sampling of the lights' squares with soft shadows (default: the scene file's)")
+    private Boolean adaptive;
+
+    @Option(names = "--beams", paramLabel = "N",
+            description = "soft shadows: N x N + 1 shadow rays per light (default: the scene file's)")
+    private Integer beams;
+
+    @Option(names = "--aa", paramLabel = "K",
+            description = "anti-aliasing: K x K rays per pixel, 1 for none (default: the scene file's)")
+    private Integer antiAliasing;
+
+    @Option(names = "--seed", paramLabel = "S",
+            description = "the seed of the random sampling (default: the scene file's)")
+    private Long seed;
+
+    @Option(names = "--threads", paramLabel = "T", defaultValue = "0",
+            description = "the number of rendering threads, 0 for one per core (default: ${DEFAULT-VALUE})")
+    private int threads;
+
+    private final boolean terminal;
+
+    /** A command whose progress bar prints one line now and then, as it does when the error stream is a file. */
+    public RenderCommand() {
+        this(false);
+    }
+
+    /**
+     * A command.
+     *
+     * @param terminal true when the error stream is a terminal: the progress bar redraws its line in place
+     */
+    public RenderCommand(boolean terminal) {
+        this.terminal = terminal;
+    }
+
+    /**
+     * A command line running a render command: bad arguments give one line, the synopsis and a hint
+     * (exit code 2), and an unexpected failure one line and exit code 1, never a stack trace.
+     *
+     * @param terminal true when the error stream is a terminal
+     * @return the command line; set its out and err writers before executing it
+     */
+    public static CommandLine newCommandLine(boolean terminal) {
+        return new CommandLine(new RenderCommand(terminal))
+                .setParameterExceptionHandler(RenderCommand::badArguments)
+                .setExecutionExceptionHandler((e, commandLine, parseResult) -> {
+                    commandLine.getErr().println("render failed: " + oneLine(String.valueOf(e)));
+                    commandLine.getErr().flush();
+                    return FAILURE;
+                });
+    }
+
+    /** Prints a bad argument's message, the synopsis and a hint to the error stream. */
+    private static int badArguments(CommandLine.ParameterException e, String[] args) {
+        CommandLine commandLine = e.getCommandLine();
+        PrintWriter err = commandLine.getErr();
+        err.println(oneLine(e.getMessage()));
+        CommandLine.UnmatchedArgumentException.printSuggestions(e, err);
+        err.print("Usage: " + commandLine.getHelp().synopsis(0));
+        err.println("Try '" + commandLine.getCommandSpec().qualifiedName() + " --help' for more information.");
+        err.flush();
+        return commandLine.getCommandSpec().exitCodeOnInvalidInput();
+    }
+
+    /** The text on one line: line breaks and the blanks around them become one space. */
+    private static String oneLine(String text) {
+        return text == null ? "" : text.strip().replaceAll("\\s*\\R\\s*", " ");
+    }
+
+    @Override
+    public Integer call() {
+        checkArguments();
+        PrintWriter err = spec.commandLine().getErr();
+        Picture picture;
+        try {
+            picture = SceneLoader.load(sceneFile);
+        } catch (IllegalArgumentException e) { // a SceneFileException names the file itself
+            err.println((e instanceof SceneFileException ? "" : sceneFile + ": ") + oneLine(e.getMessage()));
+            err.flush();
+            return BAD_INPUT;
+        }
+        picture = adjust(picture);
+        Path file = outputFile();
+        Render render = picture.newRender(file).setMultithreading(threads);
+        long start = System.nanoTime();
+        try (ProgressBar bar = progressBar((long) picture.nX() * picture.nY())) {
+            render.setProgressListener(progress(bar));
+            picture.render(render);
+        } catch (UncheckedIOException e) {
+            err.println(oneLine(e.getMessage()));
+            err.flush();
+            return FAILURE;
+        }
+        double seconds = (System.nanoTime() - start) / 1e9;
+        report(file, picture, seconds, render.getRayTracer());
+        return OK;
+    }
+
+    /** Checks the options' values; a bad one is a bad argument (exit code 2). */
+    private void checkArguments() {
+        atLeastOne("--width", width);
+        atLeastOne("--height", height);
+        atLeastOne("--beams", beams);
+        atLeastOne("--aa", antiAliasing);
+        if (threads < 0)
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                    "--threads must be 0 (one per core) or more, got " + threads);
+        if (output != null) {
+            Path name = output.getFileName();
+            if (name == null || !name.toString().endsWith(ImageWriter.EXTENSION)
+                    || name.toString().equals(ImageWriter.EXTENSION))
+                throw new CommandLine.ParameterException(spec.commandLine(),
+                        "the output file name must end with " + ImageWriter.EXTENSION + ", got " + output);
+        }
+    }
+
+    private void atLeastOne(String option, Integer value) {
+        if (value != null && value < 1)
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                    option + " must be 1 or more, got " + value);
+    }
+
+    /** The picture with the options given on the command line instead of the scene file's. */
+    private Picture adjust(Picture picture) {
+        RenderSettings settings = picture.settings();
+        if (softShadows != null)
+            settings = settings.withSoftShadows(softShadows);
+        if (adaptive != null)
+            settings = settings.withAdaptiveSoftShadows(adaptive);
+        if (beams != null)
+            settings = settings.withSqrtBeamNum(beams);
+        if (antiAliasing != null)
+            settings = settings.withAntiAliasing(antiAliasing);
+        if (seed != null)
+            settings = settings.withSeed(seed);
+        int w = picture.nX();
+        int h = picture.nY();
+        if (width != null && height != null) {
+            w = width;
+            h = height;
+        } else if (width != null) {
+            w = width;
+            h = (int) Math.max(1, Math.round((double) width * picture.nY() / picture.nX()));
+        } else if (height != null) {
+            h = height;
+            w = (int) Math.max(1, Math.round((double) height * picture.nX() / picture.nY()));
+        }
+        return picture.withSize(w, h).withSettings(settings);
+    }
+
+    /**
+     * @return the image file: the one given with {@code -o}, or the scene file's name with {@code .png}
+     * instead of {@code .xml}, in the current directory
+     */
+    Path outputFile() {
+        if (output != null)
+            return output;
+        String name = sceneFile.getFileName().toString();
+        if (name.toLowerCase(Locale.ROOT).endsWith(".xml"))
+            name = name.substring(0, name.length() - ".xml".length());
+        return Path.of(name + ImageWriter.EXTENSION);
+    }
+
+    /** A progress bar on the error stream, counting pixels. */
+    private ProgressBar progressBar(long pixels) {
+        boolean unicode = terminal && StandardCharsets.UTF_8.equals(Charset.defaultCharset());
+        return new ProgressBarBuilder().setTaskName("Rendering").setInitialMax(pixels).setUnit(" px", 1)
+                .setStyle(unicode ? ProgressBarStyle.UNICODE_BLOCK : ProgressBarStyle.ASCII)
+                .setUpdateIntervalMillis(terminal ? TERMINAL_UPDATE_MS : LOG_UPDATE_MS)
+                .setConsumer(new WriterConsumer(spec.commandLine().getErr(), terminal))
+                .build();
+    }
+
+    /** A thread-safe listener moving the bar forward (never back, whatever order the threads report in). */
+    private static LongConsumer progress(ProgressBar bar) {
+        long[] shown = {0};
+        return pixelsDone -> {
+            synchronized (shown) {
+                if (pixelsDone > shown[0]) {
+                    shown[0] = pixelsDone;
+                    bar.stepTo(pixelsDone);
+                }
+            }
+        };
+    }
+
+    /** Prints the image file, its size, the time and the ray counts. */
+    private void report(Path file, Picture picture, double seconds, RayTracerBase tracer) {
+        long primary = tracer.getPrimaryRaysCount();
+        long shadow = tracer.getShadowRaysCount();
+        PrintWriter out = spec.commandLine().getOut();
+        out.printf(Locale.ROOT, "Image:        %s%n", file.toAbsolutePath().normalize());
+        out.printf(Locale.ROOT, "Size:         %d x %d pixels%n", picture.nX(), picture.nY());
+        out.printf(Locale.ROOT, "Time:         %.3f s%n", seconds);
+        out.printf(Locale.ROOT, "Primary rays: %d%n", primary);
+        out.printf(Locale.ROOT, "Shadow rays:  %d%n", shadow);
+        out.printf(Locale.ROOT, "Rays/second:  %.0f%n", seconds > 0 ? (primary + shadow) / seconds : 0.0);
+        out.flush();
+    }
+
+    /**
+     * Shows the progress bar on a writer: on a terminal the line is redrawn in place; otherwise each
+     * update is a line of its own, so that a log file stays readable.
+     */
+    private static final class WriterConsumer implements ProgressBarConsumer {
+        private final PrintWriter writer;
+        private final boolean terminal;
+        private String last;
+
+        WriterConsumer(PrintWriter writer, boolean terminal) {
+            this.writer = writer;
+            this.terminal = terminal;
+        }
+
+        @Override
+        public int getMaxRenderedLength() {
+            return BAR_WIDTH;
+        }
+
+        @Override
+        public void accept(String rendered) {
+            if (terminal)
+                writer.print('\r' + rendered);
+            else if (!rendered.equals(last)) // the library may draw the last state twice
+                writer.println(rendered);
+            last = rendered;
+            writer.flush();
+        }
+
+        @Override
+        public void close() {
+            if (terminal)
+                writer.println();
+            writer.flush();
+        }
+    }
+}

@@ -1,0 +1,80 @@
+package app;
+
+import renderer.RayTracerBase;
+import renderer.Render;
+
+/**
+ * How a picture is rendered: soft shadows, shadow rays per light, anti-aliasing and the random seed.
+ *
+ * @param softShadows         whether lights with an area cast soft shadows
+ * @param adaptiveSoftShadows whether a light's square is sampled adaptively (outline first)
+ * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 or more
+ * @param antiAliasing        the number of rays along each side of a pixel, 1 or more
+ * @param seed                the seed of the per-pixel random streams
+ */
+public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, int sqrtBeamNum, int antiAliasing,
+                             long seed) {
+    /** Hard shadows, 9 × 9 cells, one ray per pixel, the default seed. */
+    public static final RenderSettings DEFAULT = new RenderSettings(false, false,
+            RayTracerBase.DEFAULT_SQRT_BEAM_NUM, 1, RayTracerBase.DEFAULT_SEED);
+
+    /** Checks the counts. */
+    public RenderSettings {
+        if (sqrtBeamNum < 1)
+            throw new IllegalArgumentException("sqrtBeamNum must be 1 or more, got " + sqrtBeamNum);
+        if (antiAliasing < 1)
+            throw new IllegalArgumentException("anti-aliasing needs 1 or more rays along each side of a pixel, got "
+                    + antiAliasing);
+    }
+
+    /**
+     * @param on true for soft shadows
+     * @return these settings with soft shadows on or off
+     */
+    public RenderSettings withSoftShadows(boolean on) {
+        return new RenderSettings(on, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed);
+    }
+
+    /**
+     * @param on true for adaptive sampling of lights' squares
+     * @return these settings with adaptive soft shadows on or off
+     */
+    public RenderSettings withAdaptiveSoftShadows(boolean on) {
+        return new RenderSettings(softShadows, on, sqrtBeamNum, antiAliasing, seed);
+    }
+
+    /**
+     * @param n the number of cells along each side of a light's square, 1 or more
+     * @return these settings with n × n + 1 shadow rays per light
+     */
+    public RenderSettings withSqrtBeamNum(int n) {
+        return new RenderSettings(softShadows, adaptiveSoftShadows, n, antiAliasing, seed);
+    }
+
+    /**
+     * @param k the number of rays along each side of a pixel, 1 or more
+     * @return these settings with k × k rays per pixel
+     */
+    public RenderSettings withAntiAliasing(int k) {
+        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, k, seed);
+    }
+
+    /**
+     * @param newSeed the seed of the random streams
+     * @return these settings with another seed
+     */
+    public RenderSettings withSeed(long newSeed) {
+        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, newSeed);
+    }
+
+    /**
+     * Passes the settings to a render whose ray tracer is set.
+     *
+     * @param render the render
+     * @return the render
+     */
+    public Render applyTo(Render render) {
+        return render.setSoftShadows(softShadows).setAdaptiveSoftShadows(adaptiveSoftShadows)
+                .setSqrtBeamNum(sqrtBeamNum).setAntiAliasing(antiAliasing).setSeed(seed);
+    }
+}

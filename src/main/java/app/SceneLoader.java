@@ -1,0 +1,190 @@
+package app;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.function.Supplier;
+
+import geometries.Cylinder;
+import geometries.Geometries;
+import geometries.Geometry;
+import geometries.Intersectable;
+import geometries.Plane;
+import geometries.Polygon;
+import geometries.Sphere;
+import geometries.Triangle;
+import geometries.Tube;
+import lighting.AmbientLight;
+import lighting.DirectionalLight;
+import lighting.LightSource;
+import lighting.PointLight;
+import lighting.SpotLight;
+import primitives.Material;
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+import renderer.Camera;
+import scene.Scene;
+
+import static primitives.Util.requireNonNull;
+
+/**
+ * Loads a scene file — XML checked against the scene schema {@code app/scene.xsd} — into a
+ * {@link Picture}: the scene, its camera, the image's size and the render settings.
+ *
+ * <pre>{@code
+ * Picture picture = SceneLoader.load(Path.of("scenes/sphereOnTriangles.xml"));
+ * picture.render(picture.newRender(Path.of("out.png")));
+ * }</pre>
+ *
+ * Every problem with a file — missing, not well-formed, an unknown element or attribute, a bad
+ * number, a body the library refuses (a zero vector, a concave polygon), a missing OBJ file — is a
+ * {@link SceneFileException} whose one-line message names the file, the line and the column.
+ */
+public final class SceneLoader {
+    /** The image's width and height when a file gives no {@code <image>} (the schema's defaults). */
+    private static final int IMAGE_SIZE = 500;
+
+    private SceneLoader() {
+    }
+
+    /**
+     * Loads a scene file.
+     *
+     * @param file the scene file; OBJ files it names are found relative to its folder
+     * @return the picture the file describes
+     * @throws SceneFileException when the file cannot be read or does not describe a valid scene
+     */
+    public static Picture load(Path file) {
+        requireNonNull(file, "scene file");
+        SceneElement root = SceneParser.parse(file);
+        return build(root, () -> picture(root, file));
+    }
+
+    private static Picture picture(SceneElement root, Path file) {
+        String name = root.has("name") ? root.text("name") : baseName(file);
+        Scene scene = new Scene(name).setBackground(root.color("background-color"));
+        SceneElement ambient = root.child("ambient-light");
+        if (ambient != null)
+            scene.setAmbientLight(build(ambient,
+                    () -> new AmbientLight(ambient.color("color"), ambient.number("kA"))));
+        SceneElement lights = root.child("lights");
+        if (lights != null)
+            for (SceneElement light : lights.children())
+                scene.lights.add(build(light, () -> light(light)));
+        SceneElement geometries = root.child("geometries");
+        if (geometries != null)
+            scene.setGeometries(geometries(geometries, file.toAbsolutePath().getParent()));
+        SceneElement image = root.child("image");
+        int nX = image == null ? IMAGE_SIZE : image.integer("width");
+        int nY = image == null ? IMAGE_SIZE : image.integer("height");
+        int grid = image == null ? 0 : image.integer("grid");
+        return new Picture(name, nX, nY, scene, camera(root.child("camera")), grid, settings(root.child("render")));
+    }
+
+    private static String baseName(Path file) {
+        String name = file.getFileName().toString();
+        return name.endsWith(".xml") ? name.substring(0, name.length() - ".xml".length()) : name;
+    }
+
+    private static Camera camera(SceneElement camera) {
+        if (camera == null) // the schema's defaults: the course's first camera
+            return new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(500, 500)
+                    .setVpDistance(100);
+        return build(camera, () -> new Camera(camera.point("p0"), camera.vector("vTo"), camera.vector("vUp"))
+                .setVpSize(camera.number("vp-width"), camera.number("vp-height"))
+                .setVpDistance(camera.number("vp-distance")));
+    }
+
+    private static RenderSettings settings(SceneElement render) {
+        if (render == null)
+            return RenderSettings.DEFAULT;
+        return build(render, () -> new RenderSettings(render.flag("soft-shadows"), render.flag("adaptive"),
+                render.integer("beams"), render.integer("anti-aliasing"), render.longInteger("seed")));
+    }
+
+    private static LightSource light(SceneElement light) {
+        if (light.name().equals("directional-light"))
+            return new DirectionalLight(light.color("color"), light.vector("direction"));
+        PointLight point = light.name().equals("spot-light")
+                ? new SpotLight(light.color("color"), light.point("position"), light.vector("direction"))
+                .setNarrowBeam(light.number("narrow-beam"))
+                : new PointLight(light.color("color"), light.point("position"));
+        point.setKc(light.number("kC")).setKl(light.number("kL")).setKq(light.number("kQ"))
+                .setEdgesSize(light.number("edge"));
+        if (light.has("u") != light.has("v"))
+            throw light.error("give both u and v, or neither", null);
+        if (light.has("u"))
+            point.setUV(light.vector("u"), light.vector("v"));
+        return point;
+    }
+
+    private static Geometries geometries(SceneElement group, Path folder) {
+        Geometries geometries = new Geometries();
+        for (SceneElement element : group.children())
+            geometries.add(build(element, () -> body(element, folder)));
+        return geometries;
+    }
+
+    private static Intersectable body(SceneElement element, Path folder) {
+        return switch (element.name()) {
+            case "geometries" -> geometries(element, folder);
+            case "mesh" -> mesh(element, folder);
+            default -> surface(shape(element), element);
+        };
+    }
+
+    private static Geometry shape(SceneElement element) {
+        return switch (element.name()) {
+            case "sphere" -> new Sphere(element.point("center"), element.number("radius"));
+            case "triangle" -> new Triangle(element.point("p0"), element.point("p1"), element.point("p2"));
+            case "polygon" -> new Polygon(vertices(element));
+            case "plane" -> new Plane(element.point("q0"), element.vector("normal"));
+            case "tube" -> new Tube(axis(element), element.number("radius"));
+            case "cylinder" -> new Cylinder(axis(element), element.number("radius"), element.number("height"));
+            default -> throw element.error("not a body", null);
+        };
+    }
+
+    private static Ray axis(SceneElement element) {
+        return new Ray(element.point("p0"), element.vector("dir"));
+    }
+
+    private static Point3D[] vertices(SceneElement polygon) {
+        double[] xyz = polygon.numbers("vertices");
+        if (xyz.length % 3 != 0)
+            throw polygon.error("vertices need three numbers (x y z) each, got " + xyz.length + " numbers", null);
+        Point3D[] vertices = new Point3D[xyz.length / 3];
+        for (int k = 0; k < vertices.length; ++k)
+            vertices[k] = new Point3D(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+        return vertices;
+    }
+
+    private static Geometries mesh(SceneElement mesh, Path folder) {
+        List<Triangle> triangles = ObjMesh.read(folder.resolve(mesh.text("file")), mesh.number("scale"),
+                mesh.point("position"));
+        Geometries geometries = new Geometries();
+        for (Triangle triangle : triangles)
+            geometries.add(surface(triangle, mesh));
+        return geometries;
+    }
+
+    /** Gives a body the emission and material of its element. */
+    private static Geometry surface(Geometry body, SceneElement element) {
+        return body.setEmission(element.color("emission"))
+                .setMaterial(new Material().setKd(element.number("kD")).setKs(element.number("kS"))
+                        .setKt(element.number("kT")).setKr(element.number("kR"))
+                        .setShininess(element.integer("nShininess")));
+    }
+
+    /** Runs a step that reads an element; a problem it meets is reported at the element's place. */
+    private static <T> T build(SceneElement element, Supplier<T> step) {
+        try {
+            return step.get();
+        } catch (SceneFileException e) {
+            throw e;
+        } catch (IllegalArgumentException e) {
+            throw element.error(e.getMessage(), e);
+        }
+    }
+
+}

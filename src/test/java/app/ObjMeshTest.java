@@ -1,0 +1,329 @@
+package app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
+
+import java.io.IOException;
+import java.net.URISyntaxException;
+import java.net.URL;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Random;
+import java.util.Set;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.function.Executable;
+import org.junit.jupiter.api.io.TempDir;
+
+import geometries.Triangle;
+import primitives.Point3D;
+import primitives.Vector;
+
+/**
+ * Unit tests for {@link ObjMesh}: reading OBJ files (quads, triangles, relative indices) into triangles,
+ * skipping degenerate faces, and refusing bad input with a message that names the file and the problem.
+ */
+class ObjMeshTest {
+    /** A folder of the test, for generated files. */
+    @TempDir
+    Path folder;
+
+    /**
+     * The path of a test OBJ file in src/test/resources/obj.
+     *
+     * @param name the file's name
+     * @return its path
+     */
+    private static Path resource(String name) {
+        URL url = ObjMeshTest.class.getResource("/obj/" + name);
+        assertNotNull(url, "missing test resource obj/" + name);
+        try {
+            return Path.of(url.toURI());
+        } catch (URISyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /** The area of a triangle: half the length of the cross product of two edges. */
+    private static double area(Triangle t) {
+        List<Point3D> v = t.getVertices();
+        return v.get(1).subtract(v.get(0)).crossProduct(v.get(2).subtract(v.get(0))).length() / 2;
+    }
+
+    /** The total area of triangles. */
+    private static double totalArea(List<Triangle> triangles) {
+        double sum = 0;
+        for (Triangle t : triangles)
+            sum += area(t);
+        return sum;
+    }
+
+    /** The centroid of a triangle. */
+    private static Point3D centroid(Triangle t) {
+        List<Point3D> v = t.getVertices();
+        return new Point3D((v.get(0).getX() + v.get(1).getX() + v.get(2).getX()) / 3,
+                (v.get(0).getY() + v.get(1).getY() + v.get(2).getY()) / 3,
+                (v.get(0).getZ() + v.get(1).getZ() + v.get(2).getZ()) / 3);
+    }
+
+    /**
+     * Checks a triangle's vertices, in order.
+     *
+     * @param expected the expected vertices
+     * @param actual   the triangle
+     * @param tc       the test case label
+     */
+    private static void assertVertices(List<Point3D> expected, Triangle actual, String tc) {
+        assertEquals(expected, actual.getVertices(), tc + ": wrong triangle vertices");
+    }
+
+    /**
+     * Checks a cube read with a scale and a position: 12 triangles whose vertices are the cube's 8
+     * corners (each used), whose total area is the cube's surface and whose normals point outward.
+     *
+     * @param triangles the triangles read
+     * @param scale     the scale (corners at ±scale from the centre)
+     * @param centre    the position (the cube's centre)
+     * @param tc        the test case label
+     */
+    private static void assertCube(List<Triangle> triangles, double scale, Point3D centre, String tc) {
+        assertEquals(12, triangles.size(), tc + ": a cube of 6 quads must give 12 triangles");
+        List<Point3D> corners = new ArrayList<>();
+        for (int sx = -1; sx <= 1; sx += 2)
+            for (int sy = -1; sy <= 1; sy += 2)
+                for (int sz = -1; sz <= 1; sz += 2)
+                    corners.add(new Point3D(centre.getX() + sx * scale, centre.getY() + sy * scale,
+                            centre.getZ() + sz * scale));
+        Set<Integer> used = new HashSet<>();
+        for (Triangle t : triangles) {
+            for (Point3D p : t.getVertices()) {
+                int corner = corners.indexOf(p);
+                assertTrue(corner >= 0, tc + ": vertex " + p + " is not a corner of the cube");
+                used.add(corner);
+            }
+            Vector normal = t.getPlane().getNormal();
+            assertEquals(1, normal.length(), 1e-10, tc + ": normal must be a unit vector");
+            Vector outward = centroid(t).subtract(centre).normalize();
+            assertTrue(normal.dotProduct(outward) > 0.5, tc + ": normal " + normal + " of " + t
+                    + " must point out of the cube (counter-clockwise winding seen from outside)");
+        }
+        assertEquals(8, used.size(), tc + ": every corner of the cube must be used");
+        double edge = 2 * scale;
+        assertEquals(6 * edge * edge, totalArea(triangles), 1e-9, tc + ": wrong total area");
+    }
+
+    /**
+     * Asserts that reading a file throws an IllegalArgumentException whose one-line message names the
+     * file and contains the given words.
+     *
+     * @param read  the reading
+     * @param file  the file the message must name
+     * @param tc    the test case label
+     * @param words the words the message must contain
+     */
+    private static void assertBad(Executable read, Path file, String tc, String... words) {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, read, tc + ": must throw");
+        assertMessage(e, file.toString(), tc);
+        for (String word : words)
+            assertMessage(e, word, tc);
+        assertFalse(e.getMessage().contains("\n") || e.getMessage().contains("\r"),
+                tc + ": message must be one line, got: " + e.getMessage());
+    }
+
+    /**
+     * Test method for {@link ObjMesh#read(Path, double, Point3D)} and {@link ObjMesh#read(Path)} on a cube
+     * of quads.
+     */
+    @Test
+    void testReadCube() {
+        Path cube = resource("cube.obj");
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: cube scaled by 2 at (10,0,0): 12 triangles, corners at (10±2, ±2, ±2), area 6·4² = 96
+        assertCube(ObjMesh.read(cube, 2, new Point3D(10, 0, 0)), 2, new Point3D(10, 0, 0), "TC01");
+
+        // TC02: read(file) is scale 1 at the origin: corners at ±1, area 24
+        assertCube(ObjMesh.read(cube), 1, Point3D.ZERO, "TC02");
+
+        // TC03: the example scene's model scenes/models/cube.obj: the same cube, 12 triangles, area 24
+        assertCube(ObjMesh.read(Path.of("scenes", "models", "cube.obj")), 1, Point3D.ZERO, "TC03");
+
+        // TC04: a position off every axis (-3,5,7) and scale 0.5: corners at (-3±0.5, 5±0.5, 7±0.5), area 6
+        assertCube(ObjMesh.read(cube, 0.5, new Point3D(-3, 5, 7)), 0.5, new Point3D(-3, 5, 7), "TC04");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a tiny scale 0.001: corners at ±0.001, area 6·0.002² = 2.4e-5
+        assertCube(ObjMesh.read(cube, 0.001, Point3D.ZERO), 0.001, Point3D.ZERO, "TC11");
+    }
+
+    /**
+     * Test method for {@link ObjMesh#read(Path)}: triangle and quad faces, the fan, relative indices and
+     * degenerate faces.
+     */
+    @Test
+    void testReadFaces() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a triangle, a quad (fan of 2) and three degenerate faces (collinear, coincident, 2 vertices):
+        // exactly 3 triangles, in file order, area 0.5 + 1 = 1.5
+        List<Triangle> mixed = ObjMesh.read(resource("mixed.obj"));
+        assertEquals(3, mixed.size(), "TC01: degenerate faces must be skipped, 3 triangles expected");
+        assertVertices(List.of(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)), mixed.get(0), "TC01");
+        assertVertices(List.of(new Point3D(2, 0, 0), new Point3D(3, 0, 0), new Point3D(3, 1, 0)), mixed.get(1), "TC01");
+        assertVertices(List.of(new Point3D(2, 0, 0), new Point3D(3, 1, 0), new Point3D(2, 1, 0)), mixed.get(2), "TC01");
+        assertEquals(1.5, totalArea(mixed), 1e-12, "TC01: wrong total area");
+
+        // TC02: relative (negative) indices with texture and normal indices: 2 triangles, at z = 0 and z = 1
+        List<Triangle> relative = ObjMesh.read(resource("relative.obj"));
+        assertEquals(2, relative.size(), "TC02: 2 triangles expected");
+        assertVertices(List.of(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)), relative.get(0), "TC02");
+        assertVertices(List.of(new Point3D(0, 0, 1), new Point3D(1, 0, 1), new Point3D(0, 1, 1)), relative.get(1), "TC02");
+
+        // TC03: the fan keeps the face's winding: the counter-clockwise quad's triangles have normal (0,0,1)
+        assertEquals(new Vector(0, 0, 1), mixed.get(1).getPlane().getNormal(), "TC03: wrong normal of the fan's 1st triangle");
+        assertEquals(new Vector(0, 0, 1), mixed.get(2).getPlane().getNormal(), "TC03: wrong normal of the fan's 2nd triangle");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a pentagon whose first three vertices are collinear: the fan's first triangle is skipped, the
+        // other two, (0,0,0)(2,0,0)(2,2,0) and (0,0,0)(2,2,0)(0,2,0), cover the square 2x2 (area 4)
+        List<Triangle> pentagon = ObjMesh.read(resource("pentagon.obj"));
+        assertEquals(2, pentagon.size(), "TC11: the degenerate triangle of the fan must be skipped");
+        assertVertices(List.of(new Point3D(0, 0, 0), new Point3D(2, 0, 0), new Point3D(2, 2, 0)), pentagon.get(0), "TC11");
+        assertVertices(List.of(new Point3D(0, 0, 0), new Point3D(2, 2, 0), new Point3D(0, 2, 0)), pentagon.get(1), "TC11");
+        assertEquals(4, totalArea(pentagon), 1e-12, "TC11: wrong total area");
+    }
+
+    /**
+     * Test method for {@link ObjMesh#read(Path, double, Point3D)} on a large generated mesh: every vertex is
+     * one point shared by the triangles around it.
+     *
+     * @throws IOException when the test cannot write its file
+     */
+    @Test
+    void testReadLargeMesh() throws IOException {
+        // a grid of n x n unit quads in the plane z = 0 with random heights: 2·n² triangles
+        int n = 200;
+        Random random = new Random(42);
+        StringBuilder obj = new StringBuilder();
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i)
+                obj.append("v ").append(i).append(' ').append(j).append(' ').append(random.nextInt(3)).append('\n');
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                int a = j * (n + 1) + i + 1;
+                obj.append("f ").append(a).append(' ').append(a + 1).append(' ').append(a + n + 2).append(' ')
+                        .append(a + n + 1).append('\n');
+            }
+        Path file = folder.resolve("grid.obj");
+        Files.writeString(file, obj);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 200x200 quads, possibly non-planar, split into a fan each: 80000 triangles
+        List<Triangle> grid = ObjMesh.read(file, 1, Point3D.ZERO);
+        assertEquals(2 * n * n, grid.size(), "TC01: wrong number of triangles");
+
+        // TC02: one vertex gives one point: the two triangles of a quad share the same point objects, and
+        // the quad to the right shares its left corners
+        assertSame(grid.get(0).getVertices().get(0), grid.get(1).getVertices().get(0), "TC02: vertex 1 must be one point");
+        assertSame(grid.get(0).getVertices().get(2), grid.get(1).getVertices().get(1), "TC02: vertex n+3 must be one point");
+        assertSame(grid.get(0).getVertices().get(1), grid.get(2).getVertices().get(0), "TC02: vertex 2 must be one point");
+        Point3D diagonal = grid.get(0).getVertices().get(2);
+        assertEquals(new Point3D(1, 1, diagonal.getZ()), diagonal, "TC02: vertex n+3 must be at x = 1, y = 1");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the last triangle is the second half of the last quad: (n-1,n-1), (n,n), (n-1,n) in x and y
+        List<Point3D> last = grid.get(grid.size() - 1).getVertices();
+        assertEquals(n - 1, last.get(0).getX(), 0, "TC11: wrong x of the last quad's corner");
+        assertEquals(n - 1, last.get(0).getY(), 0, "TC11: wrong y of the last quad's corner");
+        assertEquals(n, last.get(1).getX(), 0, "TC11: wrong x of the last vertex");
+        assertEquals(n, last.get(1).getY(), 0, "TC11: wrong y of the last vertex");
+    }
+
+    /**
+     * Test method for {@link ObjMesh#read(Path, double, Point3D)}: bad files and bad arguments.
+     */
+    @Test
+    void testBadInput() {
+        Path cube = resource("cube.obj");
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a missing file
+        Path missing = folder.resolve("missing.obj");
+        assertBad(() -> ObjMesh.read(missing), missing, "TC01", "OBJ file not found");
+
+        // TC02: a coordinate that is not a number
+        Path malformed = resource("malformed.obj");
+        assertBad(() -> ObjMesh.read(malformed), malformed, "TC02", "bad OBJ file", "abc");
+
+        // TC03: a face index that is not a number
+        Path badFace = resource("bad-face.obj");
+        assertBad(() -> ObjMesh.read(badFace), badFace, "TC03", "bad OBJ file", "f 1 2 x");
+
+        // TC04: a face index past the last vertex
+        Path outOfRange = resource("index-out-of-range.obj");
+        assertBad(() -> ObjMesh.read(outOfRange), outOfRange, "TC04", "bad OBJ file", "vertex 9", "3 vertices");
+
+        // TC05: a relative index before the first vertex
+        Path relative = resource("relative-out-of-range.obj");
+        assertBad(() -> ObjMesh.read(relative), relative, "TC05", "bad OBJ file", "before the first");
+
+        // TC06: a vertex with two coordinates
+        Path twoCoordinates = resource("two-coordinates.obj");
+        assertBad(() -> ObjMesh.read(twoCoordinates), twoCoordinates, "TC06", "bad OBJ file", "2 coordinates");
+
+        // TC07: a vertex line without coordinates
+        Path emptyVertex = resource("empty-vertex.obj");
+        assertBad(() -> ObjMesh.read(emptyVertex), emptyVertex, "TC07", "bad OBJ file", "no coordinates");
+
+        // TC08: a coordinate too large for a float (infinite)
+        Path huge = resource("huge.obj");
+        assertBad(() -> ObjMesh.read(huge), huge, "TC08", "bad OBJ file", "vertex 2", "finite");
+
+        // TC09: vertices but no faces
+        Path noFaces = resource("no-faces.obj");
+        assertBad(() -> ObjMesh.read(noFaces), noFaces, "TC09", "has no triangles");
+
+        // TC10: only degenerate faces
+        Path degenerate = resource("all-degenerate.obj");
+        assertBad(() -> ObjMesh.read(degenerate), degenerate, "TC10", "has no triangles", "degenerate");
+
+        // TC11: a folder instead of a file
+        assertBad(() -> ObjMesh.read(folder), folder, "TC11", "bad OBJ file");
+
+        // TC12: negative scale
+        assertBad(() -> ObjMesh.read(cube, -1, Point3D.ZERO), cube, "TC12", "scale", "positive");
+
+        // TC13: null file
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> ObjMesh.read(null, 1, Point3D.ZERO), "TC13: null file must throw");
+        assertMessage(e, "OBJ file must not be null", "TC13");
+        e = assertThrows(IllegalArgumentException.class, () -> ObjMesh.read(null), "TC13: null file must throw");
+        assertMessage(e, "OBJ file must not be null", "TC13");
+
+        // TC14: null position
+        assertBad(() -> ObjMesh.read(cube, 1, null), cube, "TC14", "position", "must not be null");
+
+        // ===== Boundary Values Tests =====
+        // TC21: an empty file
+        Path empty = resource("empty.obj");
+        assertBad(() -> ObjMesh.read(empty), empty, "TC21", "has no triangles");
+
+        // TC22: scale 0
+        assertBad(() -> ObjMesh.read(cube, 0, Point3D.ZERO), cube, "TC22", "scale", "positive");
+
+        // TC23: scale NaN and infinite
+        assertBad(() -> ObjMesh.read(cube, Double.NaN, Point3D.ZERO), cube, "TC23", "scale", "finite");
+        assertBad(() -> ObjMesh.read(cube, Double.POSITIVE_INFINITY, Point3D.ZERO), cube, "TC23", "scale", "finite");
+
+        // TC24: a scale and a position whose sum overflows: vertex 2 (1,-1,-1) lands at x = infinity
+        assertBad(() -> ObjMesh.read(cube, Double.MAX_VALUE, new Point3D(Double.MAX_VALUE, 0, 0)), cube, "TC24",
+                "bad OBJ file", "vertex 2", "finite");
+    }
+}

@@ -1,0 +1,457 @@
+package app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import picocli.CommandLine;
+
+/**
+ * Tests for {@link RenderCommand}: the command runs in this process, its out and err writers captured;
+ * the pictures are small and go to {@code target/test-cli/} (never {@code images/}).
+ */
+class RenderCommandTest {
+    /** Where the tests' scene files and pictures go. */
+    private static final Path FOLDER = Path.of("target", "test-cli");
+
+    /**
+     * The test scene: a grey floor, a blue sphere above it, and a square light of edge 80 casting the
+     * sphere's shadow on the floor; 300 × 200 pixels, hard shadows, 9 × 9 beams.
+     */
+    private static final String SCENE = """
+            <scene background-color="20 20 40">
+              <camera p0="0 0 1000" vTo="0 0 -1" vUp="0 1 0" vp-width="300" vp-height="200" vp-distance="1000"/>
+              <image width="300" height="200"/>
+              %s
+              <ambient-light color="255 255 255" kA="0.1"/>
+              <lights>
+                <point-light color="600 600 600" position="50 50 300" kL="0.0001" edge="80" u="1 0 0" v="0 1 0"/>
+              </lights>
+              <geometries>
+                <polygon vertices="-150 -150 -200  150 -150 -200  150 150 -200  -150 150 -200" kD="0.6"/>
+                <sphere center="0 0 -100" radius="50" emission="0 0 120" kD="0.5" kS="0.5" nShininess="30"/>
+              </geometries>
+            </scene>
+            """;
+
+    private static Path sceneFile;
+
+    /** The result of one run of the command. */
+    private record Result(int code, String out, String err) {
+        /** @return the error stream's lines */
+        List<String> errLines() {
+            return err.lines().toList();
+        }
+    }
+
+    /** Writes the test scene (with the file's own settings, hard shadows) into the test folder. */
+    @BeforeAll
+    static void writeScene() throws IOException {
+        Files.createDirectories(FOLDER);
+        sceneFile = writeScene(FOLDER.resolve("cliScene.xml"), "");
+    }
+
+    private static Path writeScene(Path file, String renderElement) throws IOException {
+        return Files.writeString(file, SCENE.formatted(renderElement));
+    }
+
+    /** Runs the command in this process, not on a terminal. */
+    private static Result run(String... args) {
+        return run(false, args);
+    }
+
+    private static Result run(boolean terminal, String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int code = RenderCommand.newCommandLine(terminal).setOut(new PrintWriter(out)).setErr(new PrintWriter(err))
+                .execute(args);
+        return new Result(code, out.toString(), err.toString());
+    }
+
+    /** Renders the test scene to target/test-cli/NAME.png with more arguments, checking that it succeeds. */
+    private static Result render(String name, String... args) {
+        String[] all = new String[args.length + 3];
+        all[0] = sceneFile.toString();
+        all[1] = "-o";
+        all[2] = FOLDER.resolve(name + ".png").toString();
+        System.arraycopy(args, 0, all, 3, args.length);
+        Result result = run(all);
+        assertEquals(0, result.code(), "render " + Arrays.toString(args) + " failed: " + result.err());
+        return result;
+    }
+
+    private static BufferedImage image(String name) throws IOException {
+        return ImageIO.read(FOLDER.resolve(name + ".png").toFile());
+    }
+
+    /** A number printed after a label in the command's report, e.g. "Shadow rays:  1234". */
+    private static long reported(Result result, String label) {
+        Matcher m = Pattern.compile("(?m)^" + Pattern.quote(label) + "\\s+(\\d+)").matcher(result.out());
+        assertTrue(m.find(), "no '" + label + "' in the report: " + result.out());
+        return Long.parseLong(m.group(1));
+    }
+
+    private static long shadowRays(Result result) {
+        return reported(result, "Shadow rays:");
+    }
+
+    /** Checks a failure printed exactly one line, with no stack trace, and no progress bar. */
+    private static void assertOneLine(Result result, String tc) {
+        assertEquals(1, result.errLines().size(), tc + ": not one line on the error stream: " + result.err());
+        assertTrue(result.err().endsWith(System.lineSeparator()), tc + ": the line is not ended");
+        assertNoStackTrace(result, tc);
+        assertFalse(result.err().contains("Rendering"), tc + ": the progress bar started");
+        assertEquals("", result.out(), tc + ": nothing should go to the output stream");
+    }
+
+    private static void assertNoStackTrace(Result result, String tc) {
+        assertFalse(result.err().contains("\tat "), tc + ": stack trace printed: " + result.err());
+        assertFalse(result.err().contains("Exception"), tc + ": exception class name printed: " + result.err());
+    }
+
+    /** Test method for {@link RenderCommand#call()}: a render succeeds and reports what it did. */
+    @Test
+    void testRender() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a 40 x 40 render: exit 0, a 40 x 40 PNG, 1600 primary rays, the report on out, the bar on err
+        Path png = FOLDER.resolve("render40.png");
+        Files.deleteIfExists(png);
+        Result result = render("render40", "--width", "40", "--height", "40");
+        assertTrue(Files.exists(png), "TC01: no image written");
+        BufferedImage image = image("render40");
+        assertEquals(40, image.getWidth(), "TC01: wrong image width");
+        assertEquals(40, image.getHeight(), "TC01: wrong image height");
+        assertEquals(1600, reported(result, "Primary rays:"), "TC01: wrong primary ray count");
+        assertTrue(shadowRays(result) > 0, "TC01: no shadow rays counted");
+        assertTrue(result.out().contains("Image:        " + png.toAbsolutePath().normalize()),
+                "TC01: the image file is not reported: " + result.out());
+        assertTrue(result.out().contains("Size:         40 x 40 pixels"), "TC01: the size is not reported");
+        assertTrue(result.out().matches("(?s).*Time: +\\d+\\.\\d{3} s.*"), "TC01: the time is not reported");
+        assertTrue(result.out().matches("(?s).*Rays/second: +\\d+.*"), "TC01: rays per second not reported");
+        assertTrue(result.err().contains("Rendering 100%"), "TC01: no progress bar on the error stream: "
+                + result.err());
+        assertFalse(result.out().contains("Rendering"), "TC01: the progress bar went to the output stream");
+        assertFalse(result.err().contains("\r"), "TC01: a bar redrawn in place while not on a terminal");
+
+        // TC02: anti-aliasing 2: 2 x 2 rays per pixel
+        result = render("render40aa", "--width", "40", "--height", "40", "--aa", "2");
+        assertEquals(6400, reported(result, "Primary rays:"), "TC02: --aa 2 should trace 6400 primary rays");
+
+        // TC03: on a terminal the bar redraws its line (carriage returns) and ends with a line break
+        result = run(true, sceneFile.toString(), "-o", FOLDER.resolve("render40term.png").toString(),
+                "--width", "40", "--height", "40");
+        assertEquals(0, result.code(), "TC03: wrong exit code");
+        assertTrue(result.err().startsWith("\rRendering"), "TC03: bar not redrawn in place: " + result.err());
+        assertTrue(result.err().endsWith(System.lineSeparator()), "TC03: the bar's line is not ended");
+        assertEquals(1600, reported(result, "Primary rays:"), "TC03: wrong primary ray count");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a 1 x 1 picture
+        result = render("render1", "--width", "1", "--height", "1");
+        assertEquals(1, image("render1").getWidth(), "TC11: wrong image width");
+        assertEquals(1, reported(result, "Primary rays:"), "TC11: one pixel, one primary ray");
+    }
+
+    /** Test method for the size options: one of them alone keeps the scene's aspect ratio (300 x 200). */
+    @Test
+    void testSize() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: --width 60 alone gives 60 x 40
+        render("width60", "--width", "60");
+        assertEquals(60, image("width60").getWidth(), "TC01: wrong width");
+        assertEquals(40, image("width60").getHeight(), "TC01: the height should follow the aspect ratio");
+        // TC02: --height 50 alone gives 75 x 50
+        render("height50", "--height", "50");
+        assertEquals(75, image("height50").getWidth(), "TC02: the width should follow the aspect ratio");
+        assertEquals(50, image("height50").getHeight(), "TC02: wrong height");
+        // TC03: both given: exactly that size, whatever the ratio
+        render("size30x45", "--width", "30", "--height", "45");
+        assertEquals(30, image("size30x45").getWidth(), "TC03: wrong width");
+        assertEquals(45, image("size30x45").getHeight(), "TC03: wrong height");
+
+        // ===== Boundary Values Tests =====
+        // TC11: --width 1 alone: the height rounds to 1 (0.67), never 0
+        render("width1", "--width", "1");
+        assertEquals(1, image("width1").getWidth(), "TC11: wrong width");
+        assertEquals(1, image("width1").getHeight(), "TC11: the height must be at least 1");
+    }
+
+    /**
+     * Test method for the shadow options: the shadow ray count is exact — one ray per light per lit
+     * point with hard shadows, sqrtBeamNum² + 1 with soft ones — and options override the file.
+     */
+    @Test
+    void testShadowOptions() throws IOException {
+        String[] size = {"--width", "40", "--height", "40"};
+        long hard = shadowRays(render("hard", size));
+        assertTrue(hard > 100, "hard shadows should trace a ray per lit floor and sphere point, got " + hard);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: --soft-shadows with --beams 2: 2² + 1 = 5 rays per lit point
+        assertEquals(5 * hard, shadowRays(render("soft2", "--soft-shadows", "--beams", "2", "--width", "40",
+                "--height", "40")), "TC01: --beams 2 should trace 5 shadow rays per lit point");
+        // TC02: --beams 3: 10 rays per lit point
+        assertEquals(10 * hard, shadowRays(render("soft3", "--soft-shadows", "--beams", "3", "--width", "40",
+                "--height", "40")), "TC02: --beams 3 should trace 10 shadow rays per lit point");
+        // TC03: --soft-shadows alone keeps the file's 9 beams: 82 rays per lit point
+        assertEquals(82 * hard, shadowRays(render("soft9", "--soft-shadows", "--width", "40", "--height", "40")),
+                "TC03: the file's 9 beams should trace 82 shadow rays per lit point");
+        // TC04: a file with soft shadows and 2 beams, no options: the file's settings (5 rays per lit point)
+        Path softFile = writeScene(FOLDER.resolve("cliSoftScene.xml"), "<render soft-shadows=\"true\" beams=\"2\"/>");
+        Result result = run(softFile.toString(), "-o", FOLDER.resolve("fileSoft.png").toString(), "--width", "40",
+                "--height", "40");
+        assertEquals(0, result.code(), "TC04: wrong exit code: " + result.err());
+        assertEquals(5 * hard, shadowRays(result), "TC04: the file's soft shadows and beams are not kept");
+        // TC05: the same file with --no-soft-shadows: hard shadows again
+        result = run(softFile.toString(), "-o", FOLDER.resolve("fileHard.png").toString(), "--width", "40",
+                "--height", "40", "--no-soft-shadows");
+        assertEquals(0, result.code(), "TC05: wrong exit code: " + result.err());
+        assertEquals(hard, shadowRays(result), "TC05: --no-soft-shadows should trace one ray per lit point");
+        // TC06: --adaptive with 3 beams: each lit point traces the outline (9 rays) or all 10
+        long adaptive = shadowRays(render("adaptive3", "--soft-shadows", "--adaptive", "--beams", "3",
+                "--width", "40", "--height", "40"));
+        assertTrue(adaptive >= 9 * hard && adaptive < 10 * hard,
+                "TC06: adaptive sampling should trace 9 or 10 rays per lit point, got " + adaptive + " for " + hard);
+
+        // ===== Boundary Values Tests =====
+        // TC11: --beams 1: 1² + 1 = 2 rays per lit point
+        assertEquals(2 * hard, shadowRays(render("soft1", "--soft-shadows", "--beams", "1", "--width", "40",
+                "--height", "40")), "TC11: --beams 1 should trace 2 shadow rays per lit point");
+    }
+
+    /** Test method for --soft-shadows: the penumbra has greys between the hard picture's shadow and light. */
+    @Test
+    void testSoftShadowsPicture() throws IOException {
+        render("penumbraHard", "--width", "60", "--height", "40", "--no-soft-shadows");
+        render("penumbraSoft", "--width", "60", "--height", "40", "--soft-shadows");
+        BufferedImage hard = image("penumbraHard");
+        BufferedImage soft = image("penumbraSoft");
+        int lighter = 0;
+        int darker = 0;
+        for (int y = 0; y < 40; ++y)
+            for (int x = 0; x < 60; ++x) {
+                int difference = grey(soft.getRGB(x, y)) - grey(hard.getRGB(x, y));
+                if (difference > 5)
+                    ++lighter;
+                else if (difference < -5)
+                    ++darker;
+            }
+        // ===== Equivalence Partitions Tests =====
+        // TC01: some points of the hard shadow are partly lit with soft shadows
+        assertTrue(lighter > 0, "TC01: no partly lit point in the soft shadow");
+        // TC02: some lit points of the hard picture are partly shadowed with soft shadows
+        assertTrue(darker > 0, "TC02: no partly shadowed point around the soft shadow");
+    }
+
+    private static int grey(int rgb) {
+        return ((rgb >> 16) & 0xFF) + ((rgb >> 8) & 0xFF) + (rgb & 0xFF);
+    }
+
+    /** Test method for --threads and --seed: threads do not change the picture, the seed changes the jitter. */
+    @Test
+    void testThreadsAndSeed() throws IOException {
+        String[] soft = {"--width", "40", "--height", "40", "--soft-shadows", "--beams", "3"};
+        render("threads1", concat(soft, "--threads", "1"));
+        render("threads3", concat(soft, "--threads", "3"));
+        render("seed7", concat(soft, "--seed", "7"));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: one thread and three threads give the same pixels
+        assertTrue(samePixels(image("threads1"), image("threads3")), "TC01: the threads changed the picture");
+        // TC02: another seed gives other jittered shadow rays, so other penumbra pixels
+        assertFalse(samePixels(image("threads1"), image("seed7")), "TC02: --seed did not change the jitter");
+        // ===== Boundary Values Tests =====
+        // TC11: --threads 0: one thread per core, the same picture
+        render("threads0", concat(soft, "--threads", "0"));
+        assertTrue(samePixels(image("threads1"), image("threads0")), "TC11: --threads 0 changed the picture");
+    }
+
+    private static String[] concat(String[] first, String... more) {
+        String[] all = Arrays.copyOf(first, first.length + more.length);
+        System.arraycopy(more, 0, all, first.length, more.length);
+        return all;
+    }
+
+    private static boolean samePixels(BufferedImage a, BufferedImage b) {
+        for (int y = 0; y < a.getHeight(); ++y)
+            for (int x = 0; x < a.getWidth(); ++x)
+                if (a.getRGB(x, y) != b.getRGB(x, y))
+                    return false;
+        return true;
+    }
+
+    /** Test method for --help and --version. */
+    @Test
+    void testHelp() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: --help: exit 0, the usage with every option on out, nothing on err
+        Result result = run("--help");
+        assertEquals(0, result.code(), "TC01: --help should exit with 0");
+        assertEquals("", result.err(), "TC01: --help wrote to the error stream");
+        for (String option : List.of("SCENE.xml", "-o, --output", "--width", "--height", "--[no-]soft-shadows",
+                "--[no-]adaptive", "--beams", "--aa", "--seed", "--threads", "-h, --help", "-V, --version"))
+            assertTrue(result.out().contains(option), "TC01: the help does not list " + option + ":\n" + result.out());
+        assertTrue(result.out().replaceAll("\\s+", " ").contains("in the current directory"),
+                "TC01: the help should say where the image goes by default");
+        // TC02: --version: exit 0, a version line
+        result = run("--version");
+        assertEquals(0, result.code(), "TC02: --version should exit with 0");
+        assertTrue(result.out().startsWith("render"), "TC02: wrong version line: " + result.out());
+    }
+
+    /** Test method for {@link RenderCommand#outputFile()}: the default image file. */
+    @Test
+    void testOutputFile() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: no -o: the scene file's name with .png, in the current directory
+        RenderCommand command = new RenderCommand();
+        new CommandLine(command).parseArgs(Path.of("some", "dir", "scene.xml").toString());
+        assertEquals(Path.of("scene.png"), command.outputFile(), "TC01: wrong default image file");
+        // TC02: -o given: that file
+        command = new RenderCommand();
+        new CommandLine(command).parseArgs("scene.xml", "-o", Path.of("out", "x.png").toString());
+        assertEquals(Path.of("out", "x.png"), command.outputFile(), "TC02: -o is not used");
+        // ===== Boundary Values Tests =====
+        // TC11: a scene file not ending with .xml keeps its whole name
+        command = new RenderCommand();
+        new CommandLine(command).parseArgs("scene.txt");
+        assertEquals(Path.of("scene.txt.png"), command.outputFile(), "TC11: wrong default image file");
+    }
+
+    /** Test method for bad arguments: exit code 2, a one-line message, the usage hint, no image. */
+    @Test
+    void testBadArguments() throws IOException {
+        String scene = sceneFile.toString();
+        String png = FOLDER.resolve("badArgument.png").toString();
+        Files.deleteIfExists(Path.of(png));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an unknown option
+        assertBadArgument("TC01", "Unknown option: '--bogus'", scene, "-o", png, "--bogus");
+        // TC02: an output file that is not a PNG
+        assertBadArgument("TC02", "must end with .png", scene, "-o", FOLDER.resolve("out.jpg").toString());
+        // TC03: no scene file
+        assertBadArgument("TC03", "Missing required parameter: 'SCENE.xml'", "-o", png);
+        // TC04: a width that is not a number
+        assertBadArgument("TC04", "Invalid value for option '--width'", scene, "-o", png, "--width", "abc");
+        // TC05: a negative width
+        assertBadArgument("TC05", "--width must be 1 or more, got -1", scene, "-o", png, "--width", "-1");
+        // TC06: two scene files
+        assertBadArgument("TC06", "Unmatched argument", scene, scene, "-o", png);
+
+        // ===== Boundary Values Tests =====
+        // TC11: --beams 0
+        assertBadArgument("TC11", "--beams must be 1 or more, got 0", scene, "-o", png, "--beams", "0");
+        // TC12: --aa 0
+        assertBadArgument("TC12", "--aa must be 1 or more, got 0", scene, "-o", png, "--aa", "0");
+        // TC13: --height 0
+        assertBadArgument("TC13", "--height must be 1 or more, got 0", scene, "-o", png, "--height", "0");
+        // TC14: --threads -1
+        assertBadArgument("TC14", "--threads must be 0", scene, "-o", png, "--threads", "-1");
+        // TC15: an output file named just ".png"
+        assertBadArgument("TC15", "must end with .png", scene, "-o", FOLDER.resolve(".png").toString());
+        assertFalse(Files.exists(Path.of(png)), "an image was written despite bad arguments");
+    }
+
+    private static void assertBadArgument(String tc, String message, String... args) {
+        Result result = run(args);
+        assertEquals(2, result.code(), tc + ": bad arguments should exit with 2");
+        List<String> lines = result.errLines();
+        assertTrue(lines.get(0).contains(message), tc + ": wrong message: " + result.err());
+        assertTrue(result.err().contains("Usage: render"), tc + ": no usage hint: " + result.err());
+        assertTrue(lines.get(lines.size() - 1).contains("render --help"), tc + ": no --help hint: " + result.err());
+        assertNoStackTrace(result, tc);
+        assertEquals("", result.out(), tc + ": nothing should go to the output stream");
+    }
+
+    /** Test method for bad scene files: exit code 2 and one line naming the file, the place and the problem. */
+    @Test
+    void testBadSceneFiles(@TempDir Path folder) throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a missing file
+        Path missing = folder.resolve("missing.xml");
+        assertBadScene("TC01", missing, missing + ": ", "no such");
+        // TC02: malformed XML (an element not closed)
+        assertBadScene("TC02", badScene(folder, "malformed.xml", "<scene>\n  <geometries>\n</scene>\n"),
+                ":3:", "</geometries>");
+        // TC03: an unknown element
+        assertBadScene("TC03", badScene(folder, "element.xml", geometries("<cube center=\"0 0 0\"/>")),
+                ":3:", "<cube>");
+        // TC04: an unknown attribute
+        assertBadScene("TC04", badScene(folder, "attribute.xml",
+                geometries("<sphere center=\"0 0 0\" radius=\"5\" colour=\"1 2 3\"/>")), ":3:", "'colour'");
+        // TC05: a bad number
+        assertBadScene("TC05", badScene(folder, "number.xml", geometries("<sphere center=\"0 0 0\" radius=\"five\"/>")),
+                ":3:", "'five'");
+        // TC06: a zero vector
+        assertBadScene("TC06", badScene(folder, "zero.xml", geometries("<plane q0=\"0 0 0\" normal=\"0 0 0\"/>")),
+                ":3:", "zero vector");
+        // TC07: a concave polygon
+        assertBadScene("TC07", badScene(folder, "concave.xml",
+                geometries("<polygon vertices=\"0 0 0  10 0 0  2 2 0  0 10 0\"/>")), ":3:", "convex");
+        // TC08: a missing .obj file
+        assertBadScene("TC08", badScene(folder, "mesh.xml", geometries("<mesh file=\"nowhere.obj\"/>")),
+                ":3:", "nowhere.obj");
+
+        // ===== Boundary Values Tests =====
+        // TC11: an empty file
+        assertBadScene("TC11", badScene(folder, "empty.xml", ""), ": ", "");
+        // TC12: a folder instead of a file
+        assertBadScene("TC12", folder, folder.toString(), "");
+        try (var files = Files.list(folder)) {
+            assertTrue(files.noneMatch(f -> f.toString().endsWith(".png")), "an image was written for a bad file");
+        }
+    }
+
+    private static Path badScene(Path folder, String name, String text) throws IOException {
+        return Files.writeString(folder.resolve(name), text);
+    }
+
+    /** A scene whose third line is this body, in its geometries. */
+    private static String geometries(String body) {
+        return "<scene>\n  <geometries>\n    " + body + "\n  </geometries>\n</scene>\n";
+    }
+
+    private static void assertBadScene(String tc, Path file, String where, String problem) {
+        Result result = run(file.toString(), "-o", file.resolveSibling("out.png").toString(), "--width", "10");
+        assertEquals(2, result.code(), tc + ": a bad scene file should exit with 2: " + result.err());
+        assertOneLine(result, tc);
+        String line = result.errLines().get(0);
+        assertTrue(line.startsWith(file.toString()), tc + ": the message does not start with the file: " + line);
+        assertTrue(line.contains(where), tc + ": the message does not give the place " + where + ": " + line);
+        assertTrue(line.contains(problem), tc + ": the message does not name " + problem + ": " + line);
+    }
+
+    /** Test method for an image that cannot be written: exit code 1 and one line. */
+    @Test
+    void testUnwritableImage(@TempDir Path folder) throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the image's folder is a regular file
+        Path notAFolder = Files.writeString(folder.resolve("file.txt"), "not a folder");
+        Result result = run(sceneFile.toString(), "-o", notAFolder.resolve("out.png").toString(),
+                "--width", "10", "--height", "10");
+        assertEquals(1, result.code(), "TC01: an unwritable image should exit with 1");
+        List<String> lines = result.errLines();
+        assertTrue(lines.get(lines.size() - 1).startsWith("cannot write image"),
+                "TC01: the last error line should say the image cannot be written: " + result.err());
+        assertNoStackTrace(result, "TC01");
+        assertEquals("", result.out(), "TC01: nothing should go to the output stream");
+        assertNotEquals(0, lines.size(), "TC01: no message");
+    }
+}

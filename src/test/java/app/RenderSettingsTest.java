@@ -1,0 +1,164 @@
+package app;
+
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
+
+import java.util.MissingResourceException;
+
+import org.junit.jupiter.api.Test;
+
+import renderer.RayTracerBase;
+import renderer.RayTracerBasic;
+import renderer.Render;
+import scene.Scene;
+
+/**
+ * Unit tests for {@link RenderSettings}: the default settings, the withXxx copies, the count checks and
+ * {@link RenderSettings#applyTo(Render)}.
+ */
+class RenderSettingsTest {
+    /** Settings where every component differs from the default. */
+    private static final RenderSettings CUSTOM = new RenderSettings(true, true, 4, 3, 7L);
+
+    /** Test method for {@link RenderSettings#DEFAULT}. */
+    @Test
+    void testDefault() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: hard shadows, not adaptive, 9 cells, 1 ray per pixel, seed 20210621
+        assertFalse(RenderSettings.DEFAULT.softShadows(), "TC01: soft shadows must be off by default");
+        assertFalse(RenderSettings.DEFAULT.adaptiveSoftShadows(), "TC01: adaptive soft shadows must be off by default");
+        assertEquals(9, RenderSettings.DEFAULT.sqrtBeamNum(), "TC01: sqrtBeamNum must be 9 by default");
+        assertEquals(1, RenderSettings.DEFAULT.antiAliasing(), "TC01: anti-aliasing must be 1 by default");
+        assertEquals(RayTracerBase.DEFAULT_SEED, RenderSettings.DEFAULT.seed(), "TC01: wrong default seed");
+        assertEquals(20_210_621L, RenderSettings.DEFAULT.seed(), "TC01: the default seed must be 20210621");
+        assertEquals(RayTracerBase.DEFAULT_SQRT_BEAM_NUM, RenderSettings.DEFAULT.sqrtBeamNum(),
+                "TC01: sqrtBeamNum must be the ray tracer's default");
+    }
+
+    /**
+     * Test method for {@link RenderSettings#withSoftShadows(boolean)},
+     * {@link RenderSettings#withAdaptiveSoftShadows(boolean)}, {@link RenderSettings#withSqrtBeamNum(int)},
+     * {@link RenderSettings#withAntiAliasing(int)} and {@link RenderSettings#withSeed(long)}.
+     */
+    @Test
+    void testWithMethods() {
+        RenderSettings d = RenderSettings.DEFAULT;
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: withSoftShadows(true) changes only softShadows: (true, false, 9, 1, default seed)
+        assertEquals(new RenderSettings(true, false, 9, 1, RayTracerBase.DEFAULT_SEED), d.withSoftShadows(true),
+                "TC01: withSoftShadows must change only softShadows");
+        // TC02: withAdaptiveSoftShadows(true) changes only adaptiveSoftShadows: (false, true, 9, 1, default seed)
+        assertEquals(new RenderSettings(false, true, 9, 1, RayTracerBase.DEFAULT_SEED), d.withAdaptiveSoftShadows(true),
+                "TC02: withAdaptiveSoftShadows must change only adaptiveSoftShadows");
+        // TC03: withSqrtBeamNum(5) changes only sqrtBeamNum: (false, false, 5, 1, default seed)
+        assertEquals(new RenderSettings(false, false, 5, 1, RayTracerBase.DEFAULT_SEED), d.withSqrtBeamNum(5),
+                "TC03: withSqrtBeamNum must change only sqrtBeamNum");
+        // TC04: withAntiAliasing(4) changes only antiAliasing: (false, false, 9, 4, default seed)
+        assertEquals(new RenderSettings(false, false, 9, 4, RayTracerBase.DEFAULT_SEED), d.withAntiAliasing(4),
+                "TC04: withAntiAliasing must change only antiAliasing");
+        // TC05: withSeed(-3) changes only the seed: (false, false, 9, 1, -3)
+        assertEquals(new RenderSettings(false, false, 9, 1, -3L), d.withSeed(-3),
+                "TC05: withSeed must change only the seed");
+        // TC06: switching flags off from custom settings (true, true, 4, 3, 7) keeps the other components
+        assertEquals(new RenderSettings(false, true, 4, 3, 7L), CUSTOM.withSoftShadows(false),
+                "TC06: withSoftShadows(false) must change only softShadows");
+        assertEquals(new RenderSettings(true, false, 4, 3, 7L), CUSTOM.withAdaptiveSoftShadows(false),
+                "TC06: withAdaptiveSoftShadows(false) must change only adaptiveSoftShadows");
+        // TC07: the original settings are not changed by the copies
+        assertEquals(new RenderSettings(false, false, 9, 1, RayTracerBase.DEFAULT_SEED), d,
+                "TC07: DEFAULT must not change");
+        assertEquals(new RenderSettings(true, true, 4, 3, 7L), CUSTOM, "TC07: the custom settings must not change");
+
+        // ===== Boundary Values Tests =====
+        // TC11: withSqrtBeamNum(1) and withAntiAliasing(1), the smallest counts, are accepted
+        assertEquals(1, d.withSqrtBeamNum(1).sqrtBeamNum(), "TC11: sqrtBeamNum 1 must be accepted");
+        assertEquals(1, CUSTOM.withAntiAliasing(1).antiAliasing(), "TC11: anti-aliasing 1 must be accepted");
+        // TC12: the same value gives equal settings
+        assertEquals(CUSTOM, CUSTOM.withSeed(7), "TC12: withSeed of the same seed must give equal settings");
+        // TC13: withSqrtBeamNum(0) and withAntiAliasing(0) are rejected
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> d.withSqrtBeamNum(0),
+                "TC13: withSqrtBeamNum(0) must be rejected"), "sqrtBeamNum", "TC13");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> d.withAntiAliasing(0),
+                "TC13: withAntiAliasing(0) must be rejected"), "anti-aliasing", "TC13");
+    }
+
+    /** Test method for the checks of {@link RenderSettings#RenderSettings(boolean, boolean, int, int, long)}. */
+    @Test
+    void testConstructor() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: good counts (4, 3) are kept
+        assertEquals(4, CUSTOM.sqrtBeamNum(), "TC01: sqrtBeamNum must be 4");
+        assertEquals(3, CUSTOM.antiAliasing(), "TC01: anti-aliasing must be 3");
+        assertTrue(CUSTOM.softShadows() && CUSTOM.adaptiveSoftShadows(), "TC01: both flags must be on");
+        assertEquals(7L, CUSTOM.seed(), "TC01: the seed must be 7");
+        // TC02: a negative sqrtBeamNum (-2) is rejected, naming sqrtBeamNum and the value
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new RenderSettings(false, false, -2, 1, 0), "TC02: sqrtBeamNum -2 must be rejected");
+        assertMessage(e, "sqrtBeamNum", "TC02");
+        assertMessage(e, "-2", "TC02");
+        // TC03: a negative anti-aliasing (-3) is rejected, naming anti-aliasing and the value
+        e = assertThrows(IllegalArgumentException.class,
+                () -> new RenderSettings(false, false, 9, -3, 0), "TC03: anti-aliasing -3 must be rejected");
+        assertMessage(e, "anti-aliasing", "TC03");
+        assertMessage(e, "-3", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: sqrtBeamNum 0 is rejected
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> new RenderSettings(false, false, 0, 1, 0),
+                "TC11: sqrtBeamNum 0 must be rejected"), "sqrtBeamNum", "TC11");
+        // TC12: anti-aliasing 0 is rejected
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> new RenderSettings(false, false, 9, 0, 0),
+                "TC12: anti-aliasing 0 must be rejected"), "anti-aliasing", "TC12");
+        // TC13: sqrtBeamNum 1 and anti-aliasing 1 are accepted
+        RenderSettings ones = assertDoesNotThrow(() -> new RenderSettings(false, false, 1, 1, 0),
+                "TC13: counts of 1 must be accepted");
+        assertEquals(1, ones.sqrtBeamNum(), "TC13: sqrtBeamNum must be 1");
+        assertEquals(1, ones.antiAliasing(), "TC13: anti-aliasing must be 1");
+        // TC14: both counts bad: the check of sqrtBeamNum comes first
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> new RenderSettings(false, false, 0, 0, 0),
+                "TC14: counts of 0 must be rejected"), "sqrtBeamNum", "TC14");
+    }
+
+    /** Test method for {@link RenderSettings#applyTo(Render)}. */
+    @Test
+    void testApplyTo() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: custom settings (true, true, 4, 3, 7) reach the ray tracer and the render, and the render is returned
+        RayTracerBase tracer = new RayTracerBasic(new Scene("settings"));
+        Render render = new Render().setRayTracer(tracer);
+        assertSame(render, CUSTOM.applyTo(render), "TC01: applyTo must return the render");
+        assertSame(tracer, render.getRayTracer(), "TC01: applyTo must keep the ray tracer");
+        assertTrue(render.getRayTracer().isSoftShadows(), "TC01: soft shadows must be on");
+        assertTrue(render.getRayTracer().isAdaptiveSoftShadows(), "TC01: adaptive soft shadows must be on");
+        assertEquals(4, render.getRayTracer().getSqrtBeamNum(), "TC01: sqrtBeamNum must be 4");
+        assertEquals(7L, render.getRayTracer().getSeed(), "TC01: the seed must be 7");
+        assertEquals(3, render.getAntiAliasing(), "TC01: anti-aliasing must be 3");
+        // TC02: DEFAULT applied over them sets everything back: (false, false, 9, 1, default seed)
+        RenderSettings.DEFAULT.applyTo(render);
+        assertFalse(render.getRayTracer().isSoftShadows(), "TC02: soft shadows must be off again");
+        assertFalse(render.getRayTracer().isAdaptiveSoftShadows(), "TC02: adaptive soft shadows must be off again");
+        assertEquals(9, render.getRayTracer().getSqrtBeamNum(), "TC02: sqrtBeamNum must be 9 again");
+        assertEquals(RayTracerBase.DEFAULT_SEED, render.getRayTracer().getSeed(), "TC02: the seed must be the default");
+        assertEquals(1, render.getAntiAliasing(), "TC02: anti-aliasing must be 1 again");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a render without a ray tracer: MissingResourceException naming the ray tracer
+        MissingResourceException e = assertThrows(MissingResourceException.class,
+                () -> CUSTOM.applyTo(new Render()), "TC11: applyTo without a ray tracer must fail");
+        assertTrue(e.getMessage().contains("ray tracer"), "TC11: the message must name the ray tracer, got "
+                + e.getMessage());
+        // TC12: counts of 1 (sqrtBeamNum 1, anti-aliasing 1) are applied
+        RayTracerBase tracer1 = new RayTracerBasic(new Scene("ones"));
+        Render render1 = new Render().setRayTracer(tracer1).setAntiAliasing(5);
+        new RenderSettings(false, false, 1, 1, 0).applyTo(render1);
+        assertEquals(1, tracer1.getSqrtBeamNum(), "TC12: sqrtBeamNum must be 1");
+        assertEquals(1, render1.getAntiAliasing(), "TC12: anti-aliasing must be back to 1");
+        assertEquals(0L, tracer1.getSeed(), "TC12: the seed must be 0");
+    }
+}

@@ -1,0 +1,288 @@
+package app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertColor;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.xml.sax.SAXParseException;
+
+import testutil.TestFiles;
+
+import primitives.Point3D;
+
+/**
+ * Unit tests for {@link SceneParser}: the validator's messages in the scene file's terms, and the tree
+ * read from a small scene file.
+ */
+class SceneParserTest {
+    private static final Path FOLDER = Path.of("target", "test-scenes", "parser");
+
+    /** The lines of a small valid scene file. */
+    private static final List<String> TINY = List.of(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>",
+            "<scene name=\"tiny\" background-color=\"75 127 90\">",
+            "  <ambient-light color=\"255 191 191\"/>",
+            "  <geometries>",
+            "    <sphere center=\"0 0 -100\" radius=\"50\"/>",
+            "    <triangle p0=\"-100 0 -100\" p1=\"0 100 -100\" p2=\"-100 100 -100\" kD=\"0.5\" nShininess=\"20\"/>",
+            "    <sphere center=\" 1  2   3 \" radius=\"2.5e1\" emission=\"10 20 30\"/>",
+            "  </geometries>",
+            "  <lights><point-light color=\"100 100 100\" position=\"0 0 100\"/></lights>",
+            "  <image width=\"40\" height=\"30\"/>",
+            "</scene>");
+
+    /** Writes a scene file under target/ and returns its path. */
+    private static Path file(String name, String xml) {
+        return TestFiles.write(FOLDER, name, xml);
+    }
+
+    /** The line of an element, as its errors report it. */
+    private static int line(SceneElement e) {
+        return e.error("where", null).getLine();
+    }
+
+    /** The column of an element, as its errors report it. */
+    private static int column(SceneElement e) {
+        return e.error("where", null).getColumn();
+    }
+
+    /** The column just after the first start tag of a line that ends with "/&gt;" or "&gt;". */
+    private static int columnAfter(String text, String tagEnd) {
+        return text.indexOf(tagEnd) + tagEnd.length() + 1;
+    }
+
+    /** Test method for {@link SceneParser#plain(String)}: attribute messages. */
+    @Test
+    void testPlainAttributes() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a bad number → "attribute 'radius' of <sphere> must be a number, got '5x0'"
+        assertEquals("attribute 'radius' of <sphere> must be a number, got '5x0'", SceneParser.plain(
+                "cvc-attribute.3: The value '5x0' of attribute 'radius' on element 'sphere' is not valid with "
+                        + "respect to its type, 'number'."), "TC01: wrong bad-number message");
+        // TC02: each schema type in words: triple, count, whole, seed, flag, path, vertices
+        assertEquals("attribute 'center' of <sphere> must be three numbers, got '0 0'", SceneParser.plain(
+                "cvc-attribute.3: The value '0 0' of attribute 'center' on element 'sphere' is not valid with "
+                        + "respect to its type, 'triple'."), "TC02: wrong triple message");
+        assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'", SceneParser.plain(
+                "cvc-attribute.3: The value '0' of attribute 'width' on element 'image' is not valid with "
+                        + "respect to its type, 'count'."), "TC02: wrong count message");
+        assertEquals("attribute 'grid' of <image> must be a whole number, 0 or more, got '-1'", SceneParser.plain(
+                "cvc-attribute.3: The value '-1' of attribute 'grid' on element 'image' is not valid with "
+                        + "respect to its type, 'whole'."), "TC02: wrong whole message");
+        assertEquals("attribute 'seed' of <render> must be a whole number, got '1.5'", SceneParser.plain(
+                "cvc-attribute.3: The value '1.5' of attribute 'seed' on element 'render' is not valid with "
+                        + "respect to its type, 'seed'."), "TC02: wrong seed message");
+        assertEquals("attribute 'soft-shadows' of <render> must be true or false, got 'yes'", SceneParser.plain(
+                "cvc-attribute.3: The value 'yes' of attribute 'soft-shadows' on element 'render' is not valid "
+                        + "with respect to its type, 'flag'."), "TC02: wrong flag message");
+        assertEquals("attribute 'file' of <mesh> must be a file name, got ''", SceneParser.plain(
+                "cvc-attribute.3: The value '' of attribute 'file' on element 'mesh' is not valid with "
+                        + "respect to its type, 'path'."), "TC02: wrong path message");
+        assertEquals("attribute 'vertices' of <polygon> must be a list of numbers, x y z for each of 3 or more "
+                + "vertices, got '0 0 0'", SceneParser.plain(
+                "cvc-attribute.3: The value '0 0 0' of attribute 'vertices' on element 'polygon' is not valid "
+                        + "with respect to its type, 'vertices'."), "TC02: wrong vertices message");
+        // TC03: an attribute the element does not have → "unknown attribute 'foo' on <sphere>"
+        assertEquals("unknown attribute 'foo' on <sphere>", SceneParser.plain(
+                "cvc-complex-type.3.2.2: Attribute 'foo' is not allowed to appear in element 'sphere'."),
+                "TC03: wrong unknown-attribute message");
+        // TC04: a required attribute missing → "<sphere> needs the attribute 'radius'"
+        assertEquals("<sphere> needs the attribute 'radius'", SceneParser.plain(
+                "cvc-complex-type.4: Attribute 'radius' must appear on element 'sphere'."),
+                "TC04: wrong missing-attribute message");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a type without words (a built-in 'double') → "a double"
+        assertEquals("attribute 'kD' of <sphere> must be a double, got 'x'", SceneParser.plain(
+                "cvc-attribute.3: The value 'x' of attribute 'kD' on element 'sphere' is not valid with "
+                        + "respect to its type, 'double'."), "TC11: an unnamed type must read 'a <type>'");
+        // TC12: a value with spaces and a quote in it is kept whole: got '5' x'
+        assertEquals("attribute 'radius' of <sphere> must be a number, got '5' x'", SceneParser.plain(
+                "cvc-attribute.3: The value '5' x' of attribute 'radius' on element 'sphere' is not valid with "
+                        + "respect to its type, 'number'."), "TC12: the whole value must be kept");
+    }
+
+    /** Test method for {@link SceneParser#plain(String)}: element and document messages. */
+    @Test
+    void testPlainElements() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an unknown element where others are expected (2.4.a) → the expected ones listed
+        assertEquals("element <cube> is unknown or not allowed here; expected one of: sphere, triangle, polygon",
+                SceneParser.plain("cvc-complex-type.2.4.a: Invalid content was found starting with element 'cube'. "
+                        + "One of '{sphere, triangle, polygon}' is expected."), "TC01: wrong 2.4.a message");
+        // TC02: an element where no more are allowed (2.4.d) → no list
+        assertEquals("element <geometries> is unknown or not allowed here", SceneParser.plain(
+                "cvc-complex-type.2.4.d: Invalid content was found starting with element 'geometries'. "
+                        + "No child element is expected at this point."), "TC02: wrong 2.4.d message");
+        // TC03: a wrong root element → "the root element must be <scene>, not <scena>"
+        assertEquals("the root element must be <scene>, not <scena>", SceneParser.plain(
+                "cvc-elt.1.a: Cannot find the declaration of element 'scena'."), "TC03: wrong root message");
+        // TC04: <scene> in a namespace (the only way 'scene' is not declared) → "<scene> must not have a namespace"
+        assertEquals("<scene> must not have a namespace", SceneParser.plain(
+                "cvc-elt.1.a: Cannot find the declaration of element 'scene'."), "TC04: wrong namespace message");
+        // TC05: text in an element-only element (2.3) → "<geometries> must not contain text"
+        assertEquals("<geometries> must not contain text", SceneParser.plain(
+                "cvc-complex-type.2.3: Element 'geometries' cannot have character [children], because the type's "
+                        + "content type is element-only."), "TC05: wrong element-only message");
+        // TC06: text or children in an empty element (2.1) → "<sphere> must not contain text"
+        assertEquals("<sphere> must not contain text", SceneParser.plain(
+                "cvc-complex-type.2.1: Element 'sphere' must have no character or element information item "
+                        + "[children], because the type's content type is empty."), "TC06: wrong empty-type message");
+        // TC07: a DOCTYPE → "a scene file must not have a DOCTYPE"
+        assertEquals("a scene file must not have a DOCTYPE", SceneParser.plain(
+                "DOCTYPE is disallowed when the feature \"http://apache.org/xml/features/disallow-doctype-decl\" "
+                        + "set to true."), "TC07: wrong DOCTYPE message");
+        // TC08: an unknown validator message loses only its code
+        assertEquals("There are multiple occurrences of ID value 'a'.", SceneParser.plain(
+                "cvc-id.2: There are multiple occurrences of ID value 'a'."), "TC08: the code must be removed");
+        // TC09: a plain parser message (no code) is unchanged
+        assertEquals("XML document structures must start and end within the same entity.", SceneParser.plain(
+                "XML document structures must start and end within the same entity."),
+                "TC09: a plain message must be unchanged");
+        assertEquals("Attribute \"radius\" was already specified for element \"sphere\".", SceneParser.plain(
+                "Attribute \"radius\" was already specified for element \"sphere\"."),
+                "TC09: a plain message must be unchanged");
+
+        // ===== Boundary Values Tests =====
+        // TC11: one expected element → "expected one of: geometries"
+        assertEquals("element <foo> is unknown or not allowed here; expected one of: geometries",
+                SceneParser.plain("cvc-complex-type.2.4.a: Invalid content was found starting with element 'foo'. "
+                        + "One of '{geometries}' is expected."), "TC11: wrong single-item list");
+        // TC12: a list without spaces after the commas gets them
+        assertEquals("element <foo> is unknown or not allowed here; expected one of: camera, image",
+                SceneParser.plain("cvc-complex-type.2.4.a: Invalid content was found starting with element 'foo'. "
+                        + "One of '{camera,image}' is expected."), "TC12: the list must be ', '-separated");
+        // TC13: a code in the middle of a message is not removed
+        assertEquals("see cvc-elt.1.a: x", SceneParser.plain("see cvc-elt.1.a: x"),
+                "TC13: only a leading code must be removed");
+        // TC14: the empty message stays empty
+        assertEquals("", SceneParser.plain(""), "TC14: the empty message must stay empty");
+    }
+
+    /** Test method for {@link SceneParser#parse(Path)}: the tree of a small valid file. */
+    @Test
+    void testParseTree() {
+        Path path = file("tiny.xml", String.join("\n", TINY) + "\n");
+        SceneElement scene = SceneParser.parse(path);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the root <scene> with its attributes, at line 2
+        assertEquals("scene", scene.name(), "TC01: the root must be <scene>");
+        assertEquals("tiny", scene.text("name"), "TC01: wrong scene name");
+        assertColor(75, 127, 90, scene.color("background-color"), "TC01: wrong background");
+        assertEquals(2, line(scene), "TC01: <scene> must be at line 2");
+        assertEquals(TINY.get(1).length() + 1, column(scene), "TC01: <scene> column must be just after its tag");
+        // TC02: the children of <scene> in file order: ambient-light, geometries, lights, image
+        assertEquals(List.of("ambient-light", "geometries", "lights", "image"),
+                scene.children().stream().map(SceneElement::name).toList(), "TC02: wrong children of <scene>");
+        assertEquals(List.of(3, 4, 9, 10), scene.children().stream().map(SceneParserTest::line).toList(),
+                "TC02: wrong lines of the children of <scene>");
+        // TC03: the bodies in file order: sphere (line 5), triangle (line 6), sphere (line 7)
+        SceneElement geometries = scene.child("geometries");
+        List<SceneElement> bodies = geometries.children();
+        assertEquals(List.of("sphere", "triangle", "sphere"), bodies.stream().map(SceneElement::name).toList(),
+                "TC03: wrong bodies");
+        assertEquals(List.of(5, 6, 7), bodies.stream().map(SceneParserTest::line).toList(), "TC03: wrong body lines");
+        assertEquals(TINY.get(4).length() + 1, column(bodies.get(0)), "TC03: wrong column of the first sphere");
+        assertSame(bodies.get(0), geometries.child("sphere"), "TC03: child must give the first sphere");
+        // TC04: attribute values given in the file
+        assertEquals(new Point3D(0, 0, -100), bodies.get(0).point("center"), "TC04: wrong sphere centre");
+        assertEquals(50, bodies.get(0).number("radius"), 1e-12, "TC04: wrong sphere radius");
+        assertEquals(0.5, bodies.get(1).number("kD"), 1e-12, "TC04: wrong triangle kD");
+        assertEquals(20, bodies.get(1).integer("nShininess"), "TC04: wrong triangle nShininess");
+        assertEquals(new Point3D(-100, 100, -100), bodies.get(1).point("p2"), "TC04: wrong triangle p2");
+        assertEquals(25, bodies.get(2).number("radius"), 1e-12, "TC04: 2.5e1 must be 25");
+        assertColor(10, 20, 30, bodies.get(2).color("emission"), "TC04: wrong emission");
+        assertEquals(40, scene.child("image").integer("width"), "TC04: wrong width");
+        assertEquals(30, scene.child("image").integer("height"), "TC04: wrong height");
+        // TC05: schema defaults filled in where the file has none
+        SceneElement sphere = bodies.get(0);
+        assertTrue(sphere.has("kD"), "TC05: kD must get its default");
+        assertEquals(0, sphere.number("kD"), 0, "TC05: the default kD must read as 0");
+        assertEquals(0, sphere.number("kT"), 0, "TC05: the default kT must read as 0");
+        assertEquals(0, sphere.integer("nShininess"), "TC05: the default nShininess must be 0");
+        assertColor(0, 0, 0, sphere.color("emission"), "TC05: the default emission must be black");
+        assertEquals(1, scene.child("ambient-light").number("kA"), 1e-12, "TC05: the default kA must be 1");
+        assertEquals(0, scene.child("image").integer("grid"), "TC05: the default grid must be 0");
+        SceneElement light = scene.child("lights").children().get(0);
+        assertEquals("point-light", light.name(), "TC05: wrong light");
+        assertEquals(1, light.number("kC"), 1e-12, "TC05: the default kC must be 1");
+        assertEquals(0, light.number("edge"), 0, "TC05: the default edge must be 0");
+        // TC06: attributes with no default stay absent
+        assertFalse(light.has("u"), "TC06: u has no default");
+        assertNull(light.text("v"), "TC06: v has no default");
+        assertNull(scene.child("camera"), "TC06: there is no camera");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a list with extra spaces " 1  2   3 " is read as (1, 2, 3)
+        assertEquals(new Point3D(1, 2, 3), bodies.get(2).point("center"), "TC11: extra spaces must be ignored");
+        // TC12: the smallest scene file "<scene/>": no children, the default background black
+        SceneElement empty = SceneParser.parse(file("empty.xml", "<scene/>"));
+        assertEquals("scene", empty.name(), "TC12: the root must be <scene>");
+        assertTrue(empty.children().isEmpty(), "TC12: an empty scene must have no children");
+        assertColor(0, 0, 0, empty.color("background-color"), "TC12: the default background must be black");
+        assertFalse(empty.has("name"), "TC12: the name has no default");
+        assertEquals(1, line(empty), "TC12: <scene/> must be at line 1");
+        assertEquals(columnAfter("<scene/>", "/>"), column(empty), "TC12: <scene/> column must be 9");
+    }
+
+    /** Test method for {@link SceneParser#parse(Path)}: bad files give one plain line with the place. */
+    @Test
+    void testParseErrors() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a bad number: the attribute's name, not the datatype's message, at line 2 just after the tag
+        String sphereLine = "  <geometries><sphere center=\"0 0 0\" radius=\"5x0\"/></geometries>";
+        Path bad = file("badNumber.xml", "<scene>\n" + sphereLine + "\n</scene>\n");
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(bad),
+                "TC01: a bad number must be reported");
+        assertEquals(bad + ":2:" + columnAfter(sphereLine, "/>") + ": attribute 'radius' of <sphere> must be a number, "
+                + "got '5x0'", e.getMessage(), "TC01: wrong message");
+        assertEquals(2, e.getLine(), "TC01: wrong line");
+        assertInstanceOf(SAXParseException.class, e.getCause(), "TC01: the cause must be the parser's exception");
+        // TC02: an unknown element, in plain words
+        Path cube = file("cube.xml", "<scene><geometries><cube/></geometries></scene>");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(cube), "TC02: <cube> must be reported");
+        assertEquals("element <cube> is unknown or not allowed here; expected one of: sphere, triangle, polygon, "
+                + "plane, tube, cylinder, mesh, geometries", e.getProblem(), "TC02: wrong problem");
+        assertEquals(1, e.getLine(), "TC02: wrong line");
+        assertEquals(27, e.getColumn(), "TC02: wrong column");
+        // TC03: XML that is not well-formed: the parser's own message, with its place
+        Path broken = file("broken.xml", "<scene>\n");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(broken), "TC03: broken XML");
+        assertFalse(e.getProblem().startsWith("cvc-"), "TC03: no validator code");
+        assertTrue(e.getLine() >= 1, "TC03: the line must be known, got " + e.getLine());
+        // TC04: a missing file: "no such scene file", no place
+        Path missing = FOLDER.resolve("missing.xml");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(missing), "TC04: a missing file");
+        assertEquals(missing + ": no such scene file", e.getMessage(), "TC04: wrong message");
+        assertEquals(SceneFileException.UNKNOWN, e.getLine(), "TC04: the line must be unknown");
+        assertInstanceOf(NoSuchFileException.class, e.getCause(), "TC04: wrong cause");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a folder instead of a file: "is a folder, not a scene file"
+        file("any.xml", "<scene/>");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(FOLDER), "TC11: a folder");
+        assertEquals(FOLDER + ": is a folder, not a scene file", e.getMessage(), "TC11: wrong message");
+        // TC12: an empty file: reported with no validator code
+        Path emptyFile = file("emptyFile.xml", "");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(emptyFile), "TC12: an empty file");
+        assertFalse(e.getProblem().startsWith("cvc-"), "TC12: no validator code");
+        // TC13: a count of 0 (just below the allowed 1)
+        Path zero = file("zeroWidth.xml", "<scene><image width=\"0\"/></scene>");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(zero), "TC13: width 0");
+        assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'", e.getProblem(),
+                "TC13: wrong problem");
+    }
+}
