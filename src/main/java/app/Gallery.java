@@ -62,17 +62,6 @@ public final class Gallery {
     }
 
     /**
-     * Renders pictures into a folder.
-     *
-     * @param pictures the pictures
-     * @param folder   the folder the PNG files go to
-     */
-    public static void render(List<Picture> pictures, Path folder) {
-        for (Picture picture : pictures)
-            render(picture, folder);
-    }
-
-    /**
      * Renders a picture into a folder.
      *
      * @param picture the picture
@@ -191,7 +180,7 @@ public final class Gallery {
     }
 
     /** The report's floor: two triangles sharing a diagonal, the seam the report's pictures show. */
-    static Geometries reportFloor(Material material) {
+    private static Geometries reportFloor(Material material) {
         Point3D corner = new Point3D(-150, -150, -115);
         Point3D farCorner = new Point3D(75, 75, -150);
         return new Geometries(

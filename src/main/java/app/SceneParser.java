@@ -36,7 +36,7 @@ import org.xml.sax.helpers.DefaultHandler;
  */
 final class SceneParser {
     /** The schema's resource, beside this class. */
-    static final String SCHEMA = "scene.xsd";
+    private static final String SCHEMA = "scene.xsd";
 
     private static final Schema SCENE_SCHEMA = loadSchema();
 

@@ -295,12 +295,11 @@ public final class SceneWriter {
                 continue;
             for (int factor = 1; factor <= MAX_DIRECTION_FACTOR; ++factor)
                 for (int decimals = 0; decimals <= MAX_DIRECTION_DECIMALS; ++decimals) {
-                    double[] candidate = new double[3];
-                    for (int k = 0; k < 3; ++k)
-                        candidate[k] = BigDecimal.valueOf(xyz[k] * factor / Math.abs(divisor))
-                                .setScale(decimals, RoundingMode.HALF_EVEN).doubleValue();
-                    if (normalisesTo(candidate, xyz)) {
-                        String text = triple(candidate[0], candidate[1], candidate[2]);
+                    double x = rounded(xyz[0] * factor / Math.abs(divisor), decimals);
+                    double y = rounded(xyz[1] * factor / Math.abs(divisor), decimals);
+                    double z = rounded(xyz[2] * factor / Math.abs(divisor), decimals);
+                    if (normalisesTo(x, y, z, unit)) {
+                        String text = triple(x, y, z);
                         int digits = digits(text);
                         if (digits < bestDigits || digits == bestDigits && (factor < bestFactor
                                 || factor == bestFactor && text.length() < best.length())) {
@@ -312,7 +311,12 @@ public final class SceneWriter {
                     }
                 }
         }
-        return best != null ? best : nearUnit(xyz);
+        return best != null ? best : nearUnit(unit);
+    }
+
+    /** A number rounded to some decimals, half to even. */
+    private static double rounded(double value, int decimals) {
+        return BigDecimal.valueOf(value).setScale(decimals, RoundingMode.HALF_EVEN).doubleValue();
     }
 
     /** The number of digits of numbers' texts, without leading zeros: 3 for {@code 0 0.2 -1}, 4 for {@code 0 10 1}. */
@@ -326,42 +330,32 @@ public final class SceneWriter {
     }
 
     /**
-     * A vector near this unit vector (a few units in the last place away), or near a small multiple of it,
+     * A vector near this unit vector (a unit in the last place away), or near a small odd multiple of it,
      * whose normalised vector is exactly the unit vector: normalising a unit vector again may move it by a
      * unit in the last place. The vector itself when the search fails.
      */
-    private static String nearUnit(double[] unit) {
-        int[] steps = { 0, 1, -1 };
-        for (int scale = 1; scale <= MAX_NUDGE_SCALE; scale += 2) // even scales repeat smaller ones
-            for (int sx : steps)
-                for (int sy : steps)
-                    for (int sz : steps) {
-                        double[] candidate = { ulps(scale * unit[0], sx), ulps(scale * unit[1], sy),
-                                ulps(scale * unit[2], sz) };
-                        if (normalisesTo(candidate, unit))
-                            return triple(candidate[0], candidate[1], candidate[2]);
-                    }
-        return triple(unit[0], unit[1], unit[2]);
+    private static String nearUnit(Vector unit) {
+        for (int scale = 1; scale <= MAX_NUDGE_SCALE; scale += 2) { // even scales repeat smaller ones
+            double[] xs = around(scale * unit.getX());
+            double[] ys = around(scale * unit.getY());
+            double[] zs = around(scale * unit.getZ());
+            for (double x : xs)
+                for (double y : ys)
+                    for (double z : zs)
+                        if (normalisesTo(x, y, z, unit))
+                            return triple(x, y, z);
+        }
+        return triple(unit.getX(), unit.getY(), unit.getZ());
     }
 
-    /** A number moved by some units in its last place. */
-    private static double ulps(double value, int steps) {
-        double moved = value;
-        for (int k = 0; k < Math.abs(steps); ++k)
-            moved = steps > 0 ? Math.nextUp(moved) : Math.nextDown(moved);
-        return moved;
+    /** A number, then its neighbours a unit in the last place up and down. */
+    private static double[] around(double value) {
+        return new double[] { value, Math.nextUp(value), Math.nextDown(value) };
     }
 
-    /** Whether the library, normalising this vector, gets exactly the unit vector. */
-    private static boolean normalisesTo(double[] candidate, double[] unit) {
-        double length = Math.sqrt(candidate[0] * candidate[0] + candidate[1] * candidate[1]
-                + candidate[2] * candidate[2]);
-        if (!(length > 0))
-            return false;
-        for (int k = 0; k < 3; ++k)
-            if (candidate[k] / length != unit[k])
-                return false;
-        return true;
+    /** Whether the library, normalising the vector (x, y, z), gets exactly the unit vector. */
+    private static boolean normalisesTo(double x, double y, double z, Vector unit) {
+        return same(new Vector(x, y, z).normalized(), unit);
     }
 
     /** Whether two vectors have exactly the same components. */
@@ -404,12 +398,13 @@ public final class SceneWriter {
     private static final class Xml {
         private final StringBuilder text = new StringBuilder();
         private int depth;
-        private String element;
+        /** Where the element being started begins in the text. */
+        private int elementStart;
         private boolean hasAttributes;
 
         /** Begins an element's start tag on a new line. */
         Xml start(String name) {
-            element = name;
+            elementStart = text.length();
             hasAttributes = false;
             text.append(INDENT.repeat(depth)).append('<').append(name);
             return this;
@@ -444,7 +439,7 @@ public final class SceneWriter {
             if (hasAttributes)
                 empty();
             else
-                text.setLength(text.length() - INDENT.length() * depth - 1 - element.length());
+                text.setLength(elementStart);
         }
 
         /** Writes the end tag of an element with children. */

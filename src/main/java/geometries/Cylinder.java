@@ -82,7 +82,7 @@ public class Cylinder extends Tube {
         double[] side = sideDistances(ray);
         if (side != null)
             for (double t : side)
-                if (t > 0 && t <= maxDistance && isBetweenCaps(ray, t))
+                if (within(t, maxDistance) && isBetweenCaps(ray, t))
                     ts.add(t);
         addCapHit(ray, 0, maxDistance, ts);
         addCapHit(ray, height, maxDistance, ts);
@@ -122,7 +122,7 @@ public class Cylinder extends Tube {
         if (vva == 0)
             return;
         double t = alignZero((capHeight - heightAt(ray, 0)) / vva);
-        if (!(t > 0 && t <= maxDistance))
+        if (!within(t, maxDistance))
             return;
         Point3D center = capHeight == 0 ? axisRay.getP0() : axisRay.getPoint(capHeight);
         if (alignZero(ray.getPoint(t).distanceSquared(center) - radius * radius) <= 0)

@@ -117,6 +117,27 @@ public abstract class Geometry extends Intersectable {
     }
 
     /**
+     * The intersection list of a body a ray crosses at two distances (a sphere, a tube).
+     *
+     * @param ray         the ray
+     * @param t1          the nearer distance (maybe negative or NaN)
+     * @param t2          the farther distance (maybe negative or NaN)
+     * @param maxDistance the largest distance that counts
+     * @return the intersections at the distances in (0, maxDistance], nearest first, or null
+     */
+    final List<GeoPoint> hitsAt(Ray ray, double t1, double t2, double maxDistance) {
+        boolean hit1 = within(t1, maxDistance);
+        boolean hit2 = within(t2, maxDistance);
+        if (hit1 && hit2)
+            return List.of(new GeoPoint(this, ray.getPoint(t1)), new GeoPoint(this, ray.getPoint(t2)));
+        if (hit1)
+            return List.of(new GeoPoint(this, ray.getPoint(t1)));
+        if (hit2)
+            return List.of(new GeoPoint(this, ray.getPoint(t2)));
+        return null;
+    }
+
+    /**
      * The number of intersections ahead of a ray, within a limit.
      *
      * @param maxT the largest distance that counts
@@ -135,13 +156,11 @@ public abstract class Geometry extends Intersectable {
      * @return the transparency factor in [0, 1]
      */
     final double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        if (nearestHit(ox, oy, oz, dx, dy, dz, maxT) == NO_HIT)
-            return 1;
         double kT = material.getKt();
-        if (kT == 0) // opaque: blocked, no need to count the hits
-            return 0;
+        if (kT == 0) // opaque: any hit blocks the light, no need to count the hits
+            return nearestHit(ox, oy, oz, dx, dy, dz, maxT) == NO_HIT ? 1 : 0;
         int count = hitCount(ox, oy, oz, dx, dy, dz, maxT);
-        return count == 1 ? kT : Math.pow(kT, count);
+        return count == 0 ? 1 : count == 1 ? kT : Math.pow(kT, count);
     }
 
     /**

@@ -55,17 +55,8 @@ public class Sphere extends Geometry {
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         Point3D p0 = ray.getP0();
         Vector dir = ray.getDir();
-        double t1 = root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), -1);
-        double t2 = root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), 1);
-        boolean hit1 = within(t1, maxDistance);
-        boolean hit2 = within(t2, maxDistance);
-        if (hit1 && hit2)
-            return List.of(new GeoPoint(this, ray.getPoint(t1)), new GeoPoint(this, ray.getPoint(t2)));
-        if (hit1)
-            return List.of(new GeoPoint(this, ray.getPoint(t1)));
-        if (hit2)
-            return List.of(new GeoPoint(this, ray.getPoint(t2)));
-        return null;
+        return hitsAt(ray, root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), -1),
+                root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), 1), maxDistance);
     }
 
     @Override

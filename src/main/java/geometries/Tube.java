@@ -54,17 +54,7 @@ public class Tube extends Geometry {
     @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         double[] ts = sideDistances(ray);
-        if (ts == null)
-            return null;
-        boolean hit1 = ts[0] > 0 && ts[0] <= maxDistance;
-        boolean hit2 = ts[1] > 0 && ts[1] <= maxDistance;
-        if (hit1 && hit2)
-            return List.of(new GeoPoint(this, ray.getPoint(ts[0])), new GeoPoint(this, ray.getPoint(ts[1])));
-        if (hit1)
-            return List.of(new GeoPoint(this, ray.getPoint(ts[0])));
-        if (hit2)
-            return List.of(new GeoPoint(this, ray.getPoint(ts[1])));
-        return null;
+        return ts == null ? null : hitsAt(ray, ts[0], ts[1], maxDistance);
     }
 
     /**

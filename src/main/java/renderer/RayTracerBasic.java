@@ -165,30 +165,31 @@ public class RayTracerBasic extends RayTracerBase {
      * @return the transparency factor in [0, 1]
      */
     double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint) {
-        Vector lightDirection = l.scale(-1); // from the point to the light
-        if (isSoftShadows() && light instanceof AreaLightSource areaLight && areaLight.getEdges() > 0)
-            return calcSoftShadows(areaLight, lightDirection, n, geoPoint);
         ThreadState state = threadState();
+        Point3D point = geoPoint.point;
+        // the ray to the light itself, or to the centre of its square
+        double ktr = visibility(light.getDistance(point), new Ray(point, l.scale(-1), n), state);
+        if (isSoftShadows() && light instanceof AreaLightSource areaLight && areaLight.getEdges() > 0)
+            return calcSoftShadows(areaLight, ktr, n, point, state);
         ++state.shadowRays;
-        return visibility(light.getDistance(geoPoint.point), new Ray(geoPoint.point, lightDirection, n), state);
+        return ktr;
     }
 
     /**
-     * The soft-shadow factor of a light with an area: one ray to the centre of the light's square and
+     * The soft-shadow factor of a light with an area: the ray to the centre of the light's square and
      * one to a jittered point in each cell of its {@code sqrtBeamNum × sqrtBeamNum} grid, averaged.
      * With adaptive sampling, the grid's outline is traced first and the inner cells only when its
      * rays and the centre's disagree.
      *
-     * @param light          the light
-     * @param lightDirection the unit direction from the point to the light's centre
-     * @param n              the surface normal at the point
-     * @param geoPoint       the lit point
+     * @param light  the light
+     * @param centre the transparency along the ray to the centre of the light's square
+     * @param n      the surface normal at the point
+     * @param point  the lit point
+     * @param state  the calling thread's state
      * @return the average transparency of the rays, in [0, 1]
      */
-    double calcSoftShadows(AreaLightSource light, Vector lightDirection, Vector n, GeoPoint geoPoint) {
-        ThreadState state = threadState();
-        Point3D point = geoPoint.point;
-        double ktr = visibility(light.getDistance(point), new Ray(point, lightDirection, n), state);
+    double calcSoftShadows(AreaLightSource light, double centre, Vector n, Point3D point, ThreadState state) {
+        double ktr = centre;
         JitteredGrid grid = getBeamGrid();
         double[] samples = state.points(grid);
         grid.sample(state.random, samples);

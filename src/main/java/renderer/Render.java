@@ -242,7 +242,7 @@ public class Render {
         private final int tilesX = (nX + TILE - 1) / TILE;
         private final int tilesCount = tilesX * ((nY + TILE - 1) / TILE);
         private final AtomicInteger nextTile = new AtomicInteger();
-        private final AtomicInteger tilesDone = new AtomicInteger();
+        /** The pixels rendered so far: what the progress listener is told and the debug print shows. */
         private final AtomicLong pixelsDone = new AtomicLong();
         private volatile RuntimeException failure;
 
@@ -276,10 +276,9 @@ public class Render {
             try {
                 for (int tile = nextTile.getAndIncrement(); tile < tilesCount && failure == null;
                      tile = nextTile.getAndIncrement()) {
-                    long pixels = renderTile(tile);
-                    tilesDone.incrementAndGet();
+                    long done = pixelsDone.addAndGet(renderTile(tile));
                     if (progressListener != null)
-                        progressListener.accept(pixelsDone.addAndGet(pixels));
+                        progressListener.accept(done);
                 }
             } catch (RuntimeException e) {
                 failure = e;
@@ -319,7 +318,7 @@ public class Render {
         private void printProgress() {
             try {
                 while (!Thread.currentThread().isInterrupted()) {
-                    System.out.printf("\r%3d%%", 100L * tilesDone.get() / tilesCount);
+                    System.out.printf("\r%3d%%", 100L * pixelsDone.get() / ((long) nX * nY));
                     System.out.flush();
                     Thread.sleep(PROGRESS_INTERVAL);
                 }

@@ -13,6 +13,8 @@ import javax.imageio.ImageIO;
 
 import org.junit.jupiter.api.Test;
 
+import testutil.TestFiles;
+
 /**
  * Tests for {@link Main}: with arguments it runs the render command in this process and returns its exit
  * code (the gallery, with no arguments, is tested by {@link GalleryTest}).
@@ -38,8 +40,7 @@ class MainTest {
     /** Test method for {@link Main#run(String[], PrintWriter, PrintWriter, boolean)}. */
     @Test
     void testRun() throws IOException {
-        Files.createDirectories(FOLDER);
-        Path scene = Files.writeString(FOLDER.resolve("twoColors.xml"), TWO_COLORS);
+        Path scene = TestFiles.write(FOLDER, "twoColors.xml", TWO_COLORS);
         Path png = FOLDER.resolve("twoColors.png");
         Files.deleteIfExists(png);
         StringWriter out = new StringWriter();

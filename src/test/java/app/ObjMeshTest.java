@@ -139,6 +139,17 @@ class ObjMeshTest {
     }
 
     /**
+     * Asserts that reading a file with {@link ObjMesh#read(Path)} fails as {@link #assertBad} says.
+     *
+     * @param file  the file
+     * @param tc    the test case label
+     * @param words the words the message must contain
+     */
+    private static void assertBadFile(Path file, String tc, String... words) {
+        assertBad(() -> ObjMesh.read(file), file, tc, words);
+    }
+
+    /**
      * Test method for {@link ObjMesh#read(Path, double, Point3D)} and {@link ObjMesh#read(Path)} on a cube
      * of quads.
      */
@@ -255,47 +266,37 @@ class ObjMeshTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a missing file
-        Path missing = folder.resolve("missing.obj");
-        assertBad(() -> ObjMesh.read(missing), missing, "TC01", "OBJ file not found");
+        assertBadFile(folder.resolve("missing.obj"), "TC01", "OBJ file not found");
 
         // TC02: a coordinate that is not a number
-        Path malformed = resource("malformed.obj");
-        assertBad(() -> ObjMesh.read(malformed), malformed, "TC02", "bad OBJ file", "abc");
+        assertBadFile(resource("malformed.obj"), "TC02", "bad OBJ file", "abc");
 
         // TC03: a face index that is not a number
-        Path badFace = resource("bad-face.obj");
-        assertBad(() -> ObjMesh.read(badFace), badFace, "TC03", "bad OBJ file", "f 1 2 x");
+        assertBadFile(resource("bad-face.obj"), "TC03", "bad OBJ file", "f 1 2 x");
 
         // TC04: a face index past the last vertex
-        Path outOfRange = resource("index-out-of-range.obj");
-        assertBad(() -> ObjMesh.read(outOfRange), outOfRange, "TC04", "bad OBJ file", "vertex 9", "3 vertices");
+        assertBadFile(resource("index-out-of-range.obj"), "TC04", "bad OBJ file", "vertex 9", "3 vertices");
 
         // TC05: a relative index before the first vertex
-        Path relative = resource("relative-out-of-range.obj");
-        assertBad(() -> ObjMesh.read(relative), relative, "TC05", "bad OBJ file", "before the first");
+        assertBadFile(resource("relative-out-of-range.obj"), "TC05", "bad OBJ file", "before the first");
 
         // TC06: a vertex with two coordinates
-        Path twoCoordinates = resource("two-coordinates.obj");
-        assertBad(() -> ObjMesh.read(twoCoordinates), twoCoordinates, "TC06", "bad OBJ file", "2 coordinates");
+        assertBadFile(resource("two-coordinates.obj"), "TC06", "bad OBJ file", "2 coordinates");
 
         // TC07: a vertex line without coordinates
-        Path emptyVertex = resource("empty-vertex.obj");
-        assertBad(() -> ObjMesh.read(emptyVertex), emptyVertex, "TC07", "bad OBJ file", "no coordinates");
+        assertBadFile(resource("empty-vertex.obj"), "TC07", "bad OBJ file", "no coordinates");
 
         // TC08: a coordinate too large for a float (infinite)
-        Path huge = resource("huge.obj");
-        assertBad(() -> ObjMesh.read(huge), huge, "TC08", "bad OBJ file", "vertex 2", "finite");
+        assertBadFile(resource("huge.obj"), "TC08", "bad OBJ file", "vertex 2", "finite");
 
         // TC09: vertices but no faces
-        Path noFaces = resource("no-faces.obj");
-        assertBad(() -> ObjMesh.read(noFaces), noFaces, "TC09", "has no triangles");
+        assertBadFile(resource("no-faces.obj"), "TC09", "has no triangles");
 
         // TC10: only degenerate faces
-        Path degenerate = resource("all-degenerate.obj");
-        assertBad(() -> ObjMesh.read(degenerate), degenerate, "TC10", "has no triangles", "degenerate");
+        assertBadFile(resource("all-degenerate.obj"), "TC10", "has no triangles", "degenerate");
 
         // TC11: a folder instead of a file
-        assertBad(() -> ObjMesh.read(folder), folder, "TC11", "bad OBJ file");
+        assertBadFile(folder, "TC11", "bad OBJ file");
 
         // TC12: negative scale
         assertBad(() -> ObjMesh.read(cube, -1, Point3D.ZERO), cube, "TC12", "scale", "positive");
@@ -312,8 +313,7 @@ class ObjMeshTest {
 
         // ===== Boundary Values Tests =====
         // TC21: an empty file
-        Path empty = resource("empty.obj");
-        assertBad(() -> ObjMesh.read(empty), empty, "TC21", "has no triangles");
+        assertBadFile(resource("empty.obj"), "TC21", "has no triangles");
 
         // TC22: scale 0
         assertBad(() -> ObjMesh.read(cube, 0, Point3D.ZERO), cube, "TC22", "scale", "positive");

@@ -24,6 +24,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 import picocli.CommandLine;
 
+import testutil.TestFiles;
+
 /**
  * Tests for {@link RenderCommand}: the command runs in this process, its out and err writers captured;
  * the pictures are small and go to {@code target/test-cli/} (never {@code images/}).
@@ -64,13 +66,12 @@ class RenderCommandTest {
 
     /** Writes the test scene (with the file's own settings, hard shadows) into the test folder. */
     @BeforeAll
-    static void writeScene() throws IOException {
-        Files.createDirectories(FOLDER);
-        sceneFile = writeScene(FOLDER.resolve("cliScene.xml"), "");
+    static void writeScene() {
+        sceneFile = writeScene("cliScene.xml", "");
     }
 
-    private static Path writeScene(Path file, String renderElement) throws IOException {
-        return Files.writeString(file, SCENE.formatted(renderElement));
+    private static Path writeScene(String name, String renderElement) {
+        return TestFiles.write(FOLDER, name, SCENE.formatted(renderElement));
     }
 
     /** Runs the command in this process, not on a terminal. */
@@ -199,23 +200,23 @@ class RenderCommandTest {
      * point with hard shadows, sqrtBeamNum² + 1 with soft ones — and options override the file.
      */
     @Test
-    void testShadowOptions() throws IOException {
+    void testShadowOptions() {
         String[] size = {"--width", "40", "--height", "40"};
         long hard = shadowRays(render("hard", size));
         assertTrue(hard > 100, "hard shadows should trace a ray per lit floor and sphere point, got " + hard);
 
         // ===== Equivalence Partitions Tests =====
         // TC01: --soft-shadows with --beams 2: 2² + 1 = 5 rays per lit point
-        assertEquals(5 * hard, shadowRays(render("soft2", "--soft-shadows", "--beams", "2", "--width", "40",
-                "--height", "40")), "TC01: --beams 2 should trace 5 shadow rays per lit point");
+        assertEquals(5 * hard, shadowRays(render("soft2", concat(size, "--soft-shadows", "--beams", "2"))),
+                "TC01: --beams 2 should trace 5 shadow rays per lit point");
         // TC02: --beams 3: 10 rays per lit point
-        assertEquals(10 * hard, shadowRays(render("soft3", "--soft-shadows", "--beams", "3", "--width", "40",
-                "--height", "40")), "TC02: --beams 3 should trace 10 shadow rays per lit point");
+        assertEquals(10 * hard, shadowRays(render("soft3", concat(size, "--soft-shadows", "--beams", "3"))),
+                "TC02: --beams 3 should trace 10 shadow rays per lit point");
         // TC03: --soft-shadows alone keeps the file's 9 beams: 82 rays per lit point
-        assertEquals(82 * hard, shadowRays(render("soft9", "--soft-shadows", "--width", "40", "--height", "40")),
+        assertEquals(82 * hard, shadowRays(render("soft9", concat(size, "--soft-shadows"))),
                 "TC03: the file's 9 beams should trace 82 shadow rays per lit point");
         // TC04: a file with soft shadows and 2 beams, no options: the file's settings (5 rays per lit point)
-        Path softFile = writeScene(FOLDER.resolve("cliSoftScene.xml"), "<render soft-shadows=\"true\" beams=\"2\"/>");
+        Path softFile = writeScene("cliSoftScene.xml", "<render soft-shadows=\"true\" beams=\"2\"/>");
         Result result = run(softFile.toString(), "-o", FOLDER.resolve("fileSoft.png").toString(), "--width", "40",
                 "--height", "40");
         assertEquals(0, result.code(), "TC04: wrong exit code: " + result.err());
@@ -226,15 +227,14 @@ class RenderCommandTest {
         assertEquals(0, result.code(), "TC05: wrong exit code: " + result.err());
         assertEquals(hard, shadowRays(result), "TC05: --no-soft-shadows should trace one ray per lit point");
         // TC06: --adaptive with 3 beams: each lit point traces the outline (9 rays) or all 10
-        long adaptive = shadowRays(render("adaptive3", "--soft-shadows", "--adaptive", "--beams", "3",
-                "--width", "40", "--height", "40"));
+        long adaptive = shadowRays(render("adaptive3", concat(size, "--soft-shadows", "--adaptive", "--beams", "3")));
         assertTrue(adaptive >= 9 * hard && adaptive < 10 * hard,
                 "TC06: adaptive sampling should trace 9 or 10 rays per lit point, got " + adaptive + " for " + hard);
 
         // ===== Boundary Values Tests =====
         // TC11: --beams 1: 1² + 1 = 2 rays per lit point
-        assertEquals(2 * hard, shadowRays(render("soft1", "--soft-shadows", "--beams", "1", "--width", "40",
-                "--height", "40")), "TC11: --beams 1 should trace 2 shadow rays per lit point");
+        assertEquals(2 * hard, shadowRays(render("soft1", concat(size, "--soft-shadows", "--beams", "1"))),
+                "TC11: --beams 1 should trace 2 shadow rays per lit point");
     }
 
     /** Test method for --soft-shadows: the penumbra has greys between the hard picture's shadow and light. */
@@ -388,39 +388,35 @@ class RenderCommandTest {
         Path missing = folder.resolve("missing.xml");
         assertBadScene("TC01", missing, missing + ": ", "no such");
         // TC02: malformed XML (an element not closed)
-        assertBadScene("TC02", badScene(folder, "malformed.xml", "<scene>\n  <geometries>\n</scene>\n"),
+        assertBadScene("TC02", TestFiles.write(folder, "malformed.xml", "<scene>\n  <geometries>\n</scene>\n"),
                 ":3:", "</geometries>");
         // TC03: an unknown element
-        assertBadScene("TC03", badScene(folder, "element.xml", geometries("<cube center=\"0 0 0\"/>")),
+        assertBadScene("TC03", TestFiles.write(folder, "element.xml", geometries("<cube center=\"0 0 0\"/>")),
                 ":3:", "<cube>");
         // TC04: an unknown attribute
-        assertBadScene("TC04", badScene(folder, "attribute.xml",
+        assertBadScene("TC04", TestFiles.write(folder, "attribute.xml",
                 geometries("<sphere center=\"0 0 0\" radius=\"5\" colour=\"1 2 3\"/>")), ":3:", "'colour'");
         // TC05: a bad number
-        assertBadScene("TC05", badScene(folder, "number.xml", geometries("<sphere center=\"0 0 0\" radius=\"five\"/>")),
-                ":3:", "'five'");
+        assertBadScene("TC05", TestFiles.write(folder, "number.xml",
+                geometries("<sphere center=\"0 0 0\" radius=\"five\"/>")), ":3:", "'five'");
         // TC06: a zero vector
-        assertBadScene("TC06", badScene(folder, "zero.xml", geometries("<plane q0=\"0 0 0\" normal=\"0 0 0\"/>")),
-                ":3:", "zero vector");
+        assertBadScene("TC06", TestFiles.write(folder, "zero.xml",
+                geometries("<plane q0=\"0 0 0\" normal=\"0 0 0\"/>")), ":3:", "zero vector");
         // TC07: a concave polygon
-        assertBadScene("TC07", badScene(folder, "concave.xml",
+        assertBadScene("TC07", TestFiles.write(folder, "concave.xml",
                 geometries("<polygon vertices=\"0 0 0  10 0 0  2 2 0  0 10 0\"/>")), ":3:", "convex");
         // TC08: a missing .obj file
-        assertBadScene("TC08", badScene(folder, "mesh.xml", geometries("<mesh file=\"nowhere.obj\"/>")),
+        assertBadScene("TC08", TestFiles.write(folder, "mesh.xml", geometries("<mesh file=\"nowhere.obj\"/>")),
                 ":3:", "nowhere.obj");
 
         // ===== Boundary Values Tests =====
         // TC11: an empty file
-        assertBadScene("TC11", badScene(folder, "empty.xml", ""), ": ", "");
+        assertBadScene("TC11", TestFiles.write(folder, "empty.xml", ""), ": ", "");
         // TC12: a folder instead of a file
         assertBadScene("TC12", folder, folder.toString(), "");
         try (var files = Files.list(folder)) {
             assertTrue(files.noneMatch(f -> f.toString().endsWith(".png")), "an image was written for a bad file");
         }
-    }
-
-    private static Path badScene(Path folder, String name, String text) throws IOException {
-        return Files.writeString(folder.resolve(name), text);
     }
 
     /** A scene whose third line is this body, in its geometries. */

@@ -181,9 +181,8 @@ class SceneLoaderTest {
 
     /** Test method for {@link SceneLoader#load(Path)}: every body, materials, emission, groups and meshes. */
     @Test
-    void testLoadBodies() throws IOException {
-        Files.createDirectories(FOLDER.resolve("models"));
-        Files.writeString(FOLDER.resolve("models").resolve("cube.obj"), """
+    void testLoadBodies() {
+        TestFiles.write(FOLDER.resolve("models"), "cube.obj", """
                 v -1 -1 -1
                 v 1 -1 -1
                 v 1 1 -1

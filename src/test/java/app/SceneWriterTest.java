@@ -2,7 +2,6 @@ package app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -38,6 +37,7 @@ import primitives.Vector;
 import renderer.Camera;
 import renderer.ImageWriter;
 import scene.Scene;
+import testutil.TestFiles;
 
 /**
  * Tests for {@link SceneWriter}: the text it writes, and the round trip Java scene → file → {@link SceneLoader}
@@ -431,9 +431,7 @@ class SceneWriterTest {
         assertTrue(e.getMessage().contains("light type") && e.getMessage().contains("OwnLight"),
                 "TC02: the message should name the light type: " + e.getMessage());
         // TC03: a file in a place that cannot be written: below a regular file
-        Files.createDirectories(FOLDER);
-        Path blocker = FOLDER.resolve("not-a-folder.txt");
-        Files.writeString(blocker, "a file, not a folder");
+        Path blocker = TestFiles.write(FOLDER, "not-a-folder.txt", "a file, not a folder");
         Path unwritable = blocker.resolve("scene.xml");
         Picture picture = new Picture("unwritable", 10, 10, new Scene("s"), camera);
         UncheckedIOException io = assertThrows(UncheckedIOException.class, () -> SceneWriter.write(picture, unwritable),

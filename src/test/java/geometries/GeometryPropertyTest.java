@@ -435,6 +435,19 @@ class GeometryPropertyTest {
     }
 
     /**
+     * A random ray from the cube of half-edge 3 × size around a body towards a point the body is aimed at.
+     *
+     * @param rnd  the random source
+     * @param body the body
+     * @return the ray, or null when its start and the aimed point nearly coincide
+     */
+    private static Ray randomAimedRay(Random rnd, Body body) {
+        Point3D origin = randomAround(rnd, body.centre(), 3 * body.size());
+        Point3D target = body.aim().apply(rnd);
+        return origin.distance(target) < 1e-3 * body.size() ? null : new Ray(origin, target.subtract(origin));
+    }
+
+    /**
      * Casts random rays at random bodies of one type and checks them all, and compares them with the
      * reference solver when the ray is clear of edges and tangents: no point may be missing.
      *
@@ -452,11 +465,10 @@ class GeometryPropertyTest {
             Body body = factory.apply(rnd);
             double size = body.size();
             for (int k = 0; k < RAYS_PER_BODY; ++k) {
-                Point3D origin = randomAround(rnd, body.centre(), 3 * size);
-                Point3D target = body.aim().apply(rnd);
-                if (origin.distance(target) < 1e-3 * size)
+                Ray ray = randomAimedRay(rnd, body);
+                if (ray == null)
                     continue;
-                Ray ray = new Ray(origin, target.subtract(origin));
+                Point3D origin = ray.getP0();
                 double maxDistance = (0.01 + 8 * rnd.nextDouble()) * size;
                 List<GeoPoint> found = checkRay(body, ray, maxDistance, "TC01");
                 ++rays;
@@ -499,11 +511,10 @@ class GeometryPropertyTest {
             Body body = factory.apply(rnd);
             double size = body.size();
             for (int k = 0; k < RAYS_PER_BODY; ++k) {
-                Point3D origin = randomAround(rnd, body.centre(), 3 * size);
-                Point3D target = body.aim().apply(rnd);
-                if (origin.distance(target) < 1e-3 * size)
+                Ray aimed = randomAimedRay(rnd, body);
+                if (aimed == null)
                     continue;
-                List<Point3D> first = body.geometry().findIntersections(new Ray(origin, target.subtract(origin)));
+                List<Point3D> first = body.geometry().findIntersections(aimed);
                 if (first == null)
                     continue;
                 Point3D start = first.get(0);

@@ -14,7 +14,6 @@ import java.util.MissingResourceException;
 
 import org.junit.jupiter.api.Test;
 
-import geometries.Plane;
 import geometries.Sphere;
 import geometries.Triangle;
 import lighting.AmbientLight;
@@ -43,8 +42,12 @@ class RenderTest {
 
     /** A 200×200 diffuse floor square at z = 0, made of two triangles. */
     private static Scene floorScene(String name) {
+        return floorScene(name, new Material().setKd(0.8));
+    }
+
+    /** A 200×200 floor square at z = 0 of the given material, made of two triangles. */
+    private static Scene floorScene(String name, Material material) {
         Scene scene = new Scene(name).setBackground(BACKGROUND);
-        Material material = new Material().setKd(0.8);
         Point3D a = new Point3D(-100, -100, 0);
         Point3D b = new Point3D(100, -100, 0);
         Point3D c = new Point3D(100, 100, 0);
@@ -53,12 +56,26 @@ class RenderTest {
         return scene;
     }
 
-    private static Render render(String name, Scene scene, int threads) {
-        Render render = new Render().setImageWriter(new ImageWriter(name, SIZE, SIZE, FOLDER))
-                .setCamera(topCamera()).setRayTracer(new RayTracerBasic(scene)).setMultithreading(threads);
+    /**
+     * Renders a square picture through the top camera with k × k rays per pixel, writing it under target/.
+     *
+     * @param name    the picture's name
+     * @param size    the picture's width and height in pixels
+     * @param tracer  the ray tracer
+     * @param k       the anti-aliasing rays per pixel side
+     * @param threads the thread count
+     * @return the render, its picture done
+     */
+    private static Render render(String name, int size, RayTracerBase tracer, int k, int threads) {
+        Render render = new Render().setImageWriter(new ImageWriter(name, size, size, FOLDER))
+                .setCamera(topCamera()).setRayTracer(tracer).setMultithreading(threads).setAntiAliasing(k);
         render.renderImage();
         render.writeToImage();
         return render;
+    }
+
+    private static Render render(String name, Scene scene, int threads) {
+        return render(name, SIZE, new RayTracerBasic(scene), 1, threads);
     }
 
     private static Render render(String name, Scene scene) {
@@ -131,14 +148,9 @@ class RenderTest {
     /** Test method for {@link Render#renderImage()}: a mirror shows the reflected body's colour. */
     @Test
     void testMirror() {
-        Scene scene = new Scene("mirror").setBackground(BACKGROUND);
-        Point3D a = new Point3D(-100, -100, 0);
-        Point3D c = new Point3D(100, 100, 0);
-        Material mirror = new Material().setKr(1);
-        scene.geometries.add(new Triangle(a, new Point3D(100, -100, 0), c).setMaterial(mirror),
-                new Triangle(a, c, new Point3D(-100, 100, 0)).setMaterial(mirror),
-                // a green sphere hanging over the mirror, off the camera's axis
-                new Sphere(new Point3D(60, 0, 300), 10).setEmission(new Color(0, 200, 0)));
+        Scene scene = floorScene("mirror", new Material().setKr(1));
+        // a green sphere hanging over the mirror, off the camera's axis
+        scene.geometries.add(new Sphere(new Point3D(60, 0, 300), 10).setEmission(new Color(0, 200, 0)));
         Render render = render("mirror", scene);
 
         // ===== Equivalence Partitions Tests =====
@@ -290,11 +302,7 @@ class RenderTest {
 
     /** Renders the sphere scene at 40×40 with k × k rays per pixel, writing it under target/. */
     private static Render renderAntiAliased(String name, RayTracerBase tracer, int k, int threads) {
-        Render render = new Render().setImageWriter(new ImageWriter(name, AA_SIZE, AA_SIZE, FOLDER))
-                .setCamera(topCamera()).setRayTracer(tracer).setMultithreading(threads).setAntiAliasing(k);
-        render.renderImage();
-        render.writeToImage();
-        return render;
+        return render(name, AA_SIZE, tracer, k, threads);
     }
 
     /** The smallest distance on the view plane from the camera axis to pixel (x, y)'s square. */
