@@ -156,11 +156,13 @@ public abstract class Geometry extends Intersectable {
      * @return the transparency factor in [0, 1]
      */
     final double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        if (nearestHit(ox, oy, oz, dx, dy, dz, maxT) == NO_HIT) // most shadow rays miss: no material read
+            return 1;
         double kT = material.getKt();
-        if (kT == 0) // opaque: any hit blocks the light, no need to count the hits
-            return nearestHit(ox, oy, oz, dx, dy, dz, maxT) == NO_HIT ? 1 : 0;
+        if (kT == 0) // opaque: blocked, no need to count the hits
+            return 0;
         int count = hitCount(ox, oy, oz, dx, dy, dz, maxT);
-        return count == 0 ? 1 : count == 1 ? kT : Math.pow(kT, count);
+        return count == 1 ? kT : Math.pow(kT, count);
     }
 
     /**
