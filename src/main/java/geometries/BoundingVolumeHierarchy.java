@@ -34,14 +34,20 @@ public final class BoundingVolumeHierarchy {
     private static final double TRAVERSAL_COST = 1.0;
     /** Boxes grow by this fraction of their size (plus an absolute bit) so flat bodies are hit. */
     private static final double PADDING = 1e-9;
+    /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
+    private static final int MAX_GATHERED = 32;
 
     private final Geometry[] bodies;
+    /** The padded box of every body of the tree, in leaf order. */
+    private final double[] bodyBounds;
     /** Whether each body of the tree is a plain {@link Triangle}, tested from {@link #triangleData}. */
     private final boolean[] triangle;
     /** The intersection data of the tree's triangles, {@link Triangle#DATA_LENGTH} doubles per body. */
     private final double[] triangleData;
     private final Geometry[] unbounded;
     private final Intersectable[] others;
+    /** Whether {@link #gather} culls bodies: false for the brute-force {@link #scan}. */
+    private final boolean culling;
     private final double[] nodeBounds;
     /**
      * Two ints per node: a leaf's first body and its body count (positive); an inner node's left
@@ -60,9 +66,22 @@ public final class BoundingVolumeHierarchy {
         private double maxT;
         private Geometry geometry;
         private double ktr;
+        private final ShadowFrustum frustum = new ShadowFrustum();
+        /** The tree's bodies {@link #gather} found, and how many. */
+        private final int[] gathered = new int[MAX_GATHERED];
+        private int gatheredCount;
+        /** The unbounded bodies {@link #gather} found, and how many. */
+        private final int[] gatheredUnbounded;
+        private int unboundedCount;
 
-        private Query(int stackSize) {
+        private Query(int stackSize, int unboundedCount) {
             this.stack = new int[stackSize];
+            this.gatheredUnbounded = new int[unboundedCount];
+        }
+
+        /** @return the pyramid of the shadow bundle the next {@link #gather} looks at */
+        public ShadowFrustum getFrustum() {
+            return frustum;
         }
     }
 
@@ -78,6 +97,8 @@ public final class BoundingVolumeHierarchy {
         this.bodies = bounded.toArray(new Geometry[0]);
         this.unbounded = infinite.toArray(new Geometry[0]);
         this.others = generic.toArray(new Intersectable[0]);
+        this.culling = tree;
+        this.bodyBounds = new double[6 * bodies.length];
         int maxNodes = Math.max(1, 2 * bodies.length);
         this.nodeBounds = new double[6 * maxNodes];
         this.nodeLinks = new int[2 * maxNodes];
@@ -125,7 +146,7 @@ public final class BoundingVolumeHierarchy {
 
     /** @return a fresh scratch space for queries on this hierarchy */
     public Query newQuery() {
-        return new Query(depth + 2);
+        return new Query(depth + 2, unbounded.length);
     }
 
     /** @return the number of nodes of the tree (0 when no body is bounded) */
@@ -191,12 +212,106 @@ public final class BoundingVolumeHierarchy {
                                 double minK, Query query) {
         query.maxT = maxT;
         query.ktr = 1;
-        if (!traverse(query, ox, oy, oz, dx, dy, dz, true, minK))
-            return 0;
+        return traverse(query, ox, oy, oz, dx, dy, dz, true, minK)
+                ? throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK) : 0;
+    }
+
+    /**
+     * Gathers the bodies a bundle of shadow rays may meet, for {@link #gatheredTransmittance}: the
+     * unbounded bodies and the tree's bodies whose boxes meet the query's {@link Query#getFrustum()
+     * frustum} (set it first), and the intersectables that are not geometries.
+     *
+     * @param query this thread's scratch space, its frustum set to the bundle's pyramid
+     * @return the number of bodies gathered (0 when no ray of the bundle can be blocked), or -1 when
+     *         more than a few bodies of the tree meet the frustum, or for a brute-force {@link #scan}:
+     *         the rays should then walk the tree with {@link #transmittance}
+     */
+    public int gather(Query query) {
+        if (!culling)
+            return -1;
+        ShadowFrustum frustum = query.frustum;
+        int found = 0;
+        for (int i = 0; i < unbounded.length; ++i)
+            if (unbounded[i].mayMeet(frustum))
+                query.gatheredUnbounded[found++] = i;
+        query.unboundedCount = found;
+        query.gatheredCount = 0;
+        if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0) && !gatherTree(query))
+            return -1;
+        return found + query.gatheredCount + others.length;
+    }
+
+    /** Walks the nodes whose boxes meet the frustum; false when too many bodies are found. */
+    private boolean gatherTree(Query query) {
+        ShadowFrustum frustum = query.frustum;
+        int[] stack = query.stack;
+        int top = 0;
+        int node = 0;
+        while (true) {
+            int first = nodeLinks[2 * node];
+            int count = nodeLinks[2 * node + 1];
+            if (count < 0) {
+                boolean leftMeets = frustum.meetsBox(nodeBounds, 6 * first);
+                boolean rightMeets = frustum.meetsBox(nodeBounds, 6 * first + 6);
+                if (leftMeets || rightMeets) {
+                    if (leftMeets && rightMeets)
+                        stack[top++] = first + 1;
+                    node = leftMeets ? first : first + 1;
+                    continue;
+                }
+            } else if (!gatherLeaf(query, first, count))
+                return false;
+            if (top == 0)
+                return true;
+            node = stack[--top];
+        }
+    }
+
+    /** Adds a leaf's bodies whose boxes meet the frustum; false when there is no room for them. */
+    private boolean gatherLeaf(Query query, int first, int count) {
+        for (int b = first; b < first + count; ++b)
+            if (query.frustum.meetsBox(bodyBounds, 6 * b)) {
+                if (query.gatheredCount == MAX_GATHERED)
+                    return false;
+                query.gathered[query.gatheredCount++] = b;
+            }
+        return true;
+    }
+
+    /**
+     * {@link #transmittance} for a ray of the bundle of the last {@link #gather}: only the gathered
+     * bodies are tested, the answer is the same.
+     *
+     * @param ox    the ray's origin, x
+     * @param oy    the ray's origin, y
+     * @param oz    the ray's origin, z
+     * @param dx    the ray's unit direction, x
+     * @param dy    the ray's unit direction, y
+     * @param dz    the ray's unit direction, z
+     * @param maxT  the distance along the ray (to its point of the light's square)
+     * @param minK  below this product the answer is 0
+     * @param query this thread's scratch space, as the last {@link #gather} left it
+     * @return the transparency in [0, 1]
+     */
+    public double gatheredTransmittance(double ox, double oy, double oz, double dx, double dy, double dz,
+                                        double maxT, double minK, Query query) {
+        query.maxT = maxT;
+        query.ktr = 1;
+        for (int i = 0; i < query.unboundedCount; ++i)
+            if (!visit(unbounded[query.gatheredUnbounded[i]], query, ox, oy, oz, dx, dy, dz, true, minK))
+                return 0;
+        for (int i = 0; i < query.gatheredCount; ++i)
+            if (!visitBody(query.gathered[i], query, ox, oy, oz, dx, dy, dz, true, minK))
+                return 0;
+        return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
+    }
+
+    /** Multiplies a transparency by the {@code kT} of every hit of the intersectables that are not geometries. */
+    private double throughOthers(double ktr, double ox, double oy, double oz, double dx, double dy, double dz,
+                                 double maxT, double minK) {
         if (others.length == 0)
-            return query.ktr;
+            return ktr;
         Ray ray = new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz));
-        double ktr = query.ktr;
         for (Intersectable other : others) {
             List<GeoPoint> hits = other.findGeoIntersections(ray, maxT);
             if (hits != null)
@@ -253,13 +368,19 @@ public final class BoundingVolumeHierarchy {
                 }
             } else
                 for (int b = first; b < first + count; ++b)
-                    if (!(triangle[b] ? visitTriangle(b, query, ox, oy, oz, dx, dy, dz, transmittance, minK)
-                            : visit(bodies[b], query, ox, oy, oz, dx, dy, dz, transmittance, minK)))
+                    if (!visitBody(b, query, ox, oy, oz, dx, dy, dz, transmittance, minK))
                         return false;
             if (top == 0)
                 return true;
             node = stack[--top];
         }
+    }
+
+    /** {@link #visit} for body b of the tree. */
+    private boolean visitBody(int b, Query query, double ox, double oy, double oz, double dx, double dy, double dz,
+                              boolean transmittance, double minK) {
+        return triangle[b] ? visitTriangle(b, query, ox, oy, oz, dx, dy, dz, transmittance, minK)
+                : visit(bodies[b], query, ox, oy, oz, dx, dy, dz, transmittance, minK);
     }
 
     /** {@link #visit} for a triangle of the tree, tested from its data; its material is read only on a hit. */
@@ -353,8 +474,10 @@ public final class BoundingVolumeHierarchy {
             nodesCount = 1;
             split(0, 0, bodies.length, 1);
             Geometry[] ordered = new Geometry[bodies.length];
-            for (int i = 0; i < bodies.length; ++i)
+            for (int i = 0; i < bodies.length; ++i) {
                 ordered[i] = bodies[order[i]];
+                System.arraycopy(boxes, 6 * order[i], bodyBounds, 6 * i, 6);
+            }
             System.arraycopy(ordered, 0, bodies, 0, bodies.length);
         }
 

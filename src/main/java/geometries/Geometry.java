@@ -166,6 +166,17 @@ public abstract class Geometry extends Intersectable {
     }
 
     /**
+     * Whether an unbounded body may meet any ray of a shadow bundle; bounded bodies are culled by
+     * their boxes instead. The default says yes.
+     *
+     * @param frustum the pyramid the bundle sweeps
+     * @return false only when no ray of the bundle can meet the body
+     */
+    boolean mayMeet(ShadowFrustum frustum) {
+        return true;
+    }
+
+    /**
      * The axis-aligned box around the body.
      *
      * @return {minX, minY, minZ, maxX, maxY, maxZ}, or null for an unbounded body

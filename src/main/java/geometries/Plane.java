@@ -108,6 +108,11 @@ public class Plane extends Geometry {
     }
 
     @Override
+    boolean mayMeet(ShadowFrustum frustum) {
+        return frustum.meetsPlane(nx, ny, nz, qx, qy, qz);
+    }
+
+    @Override
     public String toString() {
         return "Plane{q0=" + q0 + ", normal=" + normal + "}";
     }

@@ -2,6 +2,7 @@ package renderer;
 
 import geometries.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
+import geometries.ShadowFrustum;
 import lighting.AreaLightSource;
 import lighting.LightSource;
 import primitives.Color;
@@ -168,11 +169,12 @@ public class RayTracerBasic extends RayTracerBase {
         ThreadState state = threadState();
         Point3D point = geoPoint.point;
         // the ray to the light itself, or to the centre of its square
-        double ktr = visibility(light.getDistance(point), new Ray(point, l.scale(-1), n), state);
+        Ray lightRay = new Ray(point, l.scale(-1), n);
+        double distance = light.getDistance(point);
         if (isSoftShadows() && light instanceof AreaLightSource areaLight && areaLight.getEdges() > 0)
-            return calcSoftShadows(areaLight, ktr, n, point, state);
+            return calcSoftShadows(areaLight, lightRay, distance, n, point, state);
         ++state.shadowRays;
-        return ktr;
+        return visibility(distance, lightRay, state);
     }
 
     /**
@@ -181,20 +183,22 @@ public class RayTracerBasic extends RayTracerBase {
      * With adaptive sampling, the grid's outline is traced first and the inner cells only when its
      * rays and the centre's disagree.
      *
-     * @param light  the light
-     * @param centre the transparency along the ray to the centre of the light's square
-     * @param n      the surface normal at the point
-     * @param point  the lit point
-     * @param state  the calling thread's state
+     * @param light         the light
+     * @param centreRay     the shadow ray to the centre of the light's square
+     * @param centreDistance the distance from the point to that centre
+     * @param n             the surface normal at the point
+     * @param point         the lit point
+     * @param state         the calling thread's state
      * @return the average transparency of the rays, in [0, 1]
      */
-    double calcSoftShadows(AreaLightSource light, double centre, Vector n, Point3D point, ThreadState state) {
-        double ktr = centre;
+    double calcSoftShadows(AreaLightSource light, Ray centreRay, double centreDistance, Vector n, Point3D point,
+                           ThreadState state) {
         JitteredGrid grid = getBeamGrid();
         double[] samples = state.points(grid);
         grid.sample(state.random, samples);
         BoundingVolumeHierarchy bvh = accelerator();
         LightSquare square = new LightSquare(light, point, n, bvh, state.query(bvh));
+        double ktr = square.visibility(centreRay, centreDistance);
         int outline = grid.getOutlineCount();
         ktr += square.visibility(samples, 0, outline);
         int rays = 1 + outline;
@@ -209,9 +213,16 @@ public class RayTracerBasic extends RayTracerBase {
 
     /**
      * A light's square as seen from a lit point, in raw doubles: shadow rays to its sample points are
-     * traced without allocating anything.
+     * traced without allocating anything. The rays are traced as one bundle: the bodies that may
+     * block any of them are gathered once, by the pyramid from the point to the square, and each ray
+     * is tested against those alone; when none may, no ray needs testing.
      */
     private static final class LightSquare {
+        /**
+         * How far, relative to the reach of the square, the square must lie off the point's tangent
+         * plane for all its rays to leave the surface on one side.
+         */
+        private static final double SIDE_MARGIN = 1e-6;
         private final double cx;
         private final double cy;
         private final double cz;
@@ -231,6 +242,8 @@ public class RayTracerBasic extends RayTracerBase {
         private final double nz;
         private final BoundingVolumeHierarchy bvh;
         private final BoundingVolumeHierarchy.Query query;
+        /** The number of bodies gathered for the bundle, or -1 when its rays walk the whole hierarchy. */
+        private final int gathered;
 
         LightSquare(AreaLightSource light, Point3D p, Vector n, BoundingVolumeHierarchy bvh,
                     BoundingVolumeHierarchy.Query query) {
@@ -256,6 +269,58 @@ public class RayTracerBasic extends RayTracerBase {
             this.nz = n.getZ() * delta;
             this.bvh = bvh;
             this.query = query;
+            this.gathered = gather();
+        }
+
+        /**
+         * Gathers the bodies the bundle's rays may meet, when all the rays leave the surface on the
+         * same side: they then start at one point, DELTA off the surface.
+         *
+         * @return the number of bodies gathered, or -1 when the rays must walk the hierarchy
+         */
+        private int gather() {
+            double half = edges / 2;
+            double ax = ux * half;
+            double ay = uy * half;
+            double az = uz * half;
+            double bx = vx * half;
+            double by = vy * half;
+            double bz = vz * half;
+            double wx = cx - px;
+            double wy = cy - py;
+            double wz = cz - pz;
+            // how far the centre and the corners c ± a ± b lie off the tangent plane, times DELTA
+            double centre = nx * wx + ny * wy + nz * wz;
+            double spread = Math.abs(nx * ax + ny * ay + nz * az) + Math.abs(nx * bx + ny * by + nz * bz);
+            double margin = SIDE_MARGIN * Ray.DELTA * (Math.sqrt(wx * wx + wy * wy + wz * wz) + edges);
+            double side = centre - spread > margin ? 1 : centre + spread < -margin ? -1 : 0;
+            ShadowFrustum frustum = query.getFrustum();
+            if (side == 0 || !frustum.set(px + side * nx, py + side * ny, pz + side * nz,
+                    cx + side * nx, cy + side * ny, cz + side * nz, ax, ay, az, bx, by, bz))
+                return -1;
+            return bvh.gather(query);
+        }
+
+        /**
+         * The transparency along the ray to the centre of the square.
+         *
+         * @param ray      the ray, its head already moved off the surface
+         * @param distance the distance from the point to the centre
+         * @return the transparency in [0, 1]
+         */
+        double visibility(Ray ray, double distance) {
+            if (gathered == 0)
+                return 1;
+            Point3D p0 = ray.getP0();
+            Vector dir = ray.getDir();
+            return transmittance(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), distance);
+        }
+
+        /** The transparency along one ray of the bundle. */
+        private double transmittance(double ox, double oy, double oz, double dx, double dy, double dz,
+                                     double distance) {
+            return gathered < 0 ? bvh.transmittance(ox, oy, oz, dx, dy, dz, distance, MIN_CALC_COLOR_K, query)
+                    : bvh.gatheredTransmittance(ox, oy, oz, dx, dy, dz, distance, MIN_CALC_COLOR_K, query);
         }
 
         /**
@@ -269,6 +334,8 @@ public class RayTracerBasic extends RayTracerBase {
          * @return the sum of the rays' transparencies
          */
         double visibility(double[] samples, int from, int to) {
+            if (gathered == 0) // nothing can block any ray of the bundle
+                return to - from;
             double ktr = 0;
             for (int s = from; s < to; ++s) {
                 double du = (0.5 - samples[2 * s]) * edges;
@@ -283,8 +350,7 @@ public class RayTracerBasic extends RayTracerBase {
                 dz *= inverse;
                 double side = alignZero(nx * dx + ny * dy + nz * dz);
                 double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
-                ktr += bvh.transmittance(px + offset * nx, py + offset * ny, pz + offset * nz, dx, dy, dz,
-                        distance, MIN_CALC_COLOR_K, query);
+                ktr += transmittance(px + offset * nx, py + offset * ny, pz + offset * nz, dx, dy, dz, distance);
             }
             return ktr;
         }
