@@ -11,6 +11,7 @@ import static testutil.TestAssertions.assertMessage;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.function.Supplier;
 
 import org.junit.jupiter.api.Test;
 
@@ -1065,5 +1066,328 @@ class BoundingVolumeHierarchyTest {
         BoundingVolumeHierarchy alone = BoundingVolumeHierarchy.build(new Geometries(hidden));
         assertNull(alone.closestHit(down, alone.newQuery()), "TC11: the hidden triangle must not be hit");
         assertEquals(1, transmittance(alone, down, 10, MIN_K, alone.newQuery()), 0, "TC11: nothing blocks");
+    }
+
+    // ---------------------------------------------------------------- shadow bundles
+
+    /**
+     * Sets the query's frustum to a bundle's pyramid and gathers for it.
+     *
+     * @param bvh   the hierarchy (or scan)
+     * @param query the scratch space
+     * @param apex  the rays' common origin
+     * @param c     the centre of the light's square
+     * @param a     half of one side of the square
+     * @param b     half of the other side
+     * @return what {@link BoundingVolumeHierarchy#gather} returns
+     */
+    private static int gather(BoundingVolumeHierarchy bvh, Query query, Point3D apex, Point3D c, Vector a, Vector b) {
+        assertTrue(query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), c.getX(), c.getY(), c.getZ(),
+                a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ()), "the bundle's pyramid must not be flat");
+        return bvh.gather(query);
+    }
+
+    /**
+     * A point of a light's square c + s·a + r·b, s and r in [−1, 1], a quarter of them on its edges
+     * and corners.
+     *
+     * @param rnd the generator
+     * @param c   the centre
+     * @param a   half of one side
+     * @param b   half of the other side
+     * @return the point
+     */
+    private static Point3D squarePoint(Random rnd, Point3D c, Vector a, Vector b) {
+        double s = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
+        double r = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
+        return new Point3D(c.getX() + s * a.getX() + r * b.getX(), c.getY() + s * a.getY() + r * b.getY(),
+                c.getZ() + s * a.getZ() + r * b.getZ());
+    }
+
+    /**
+     * A random vector of a random direction and a length from 0.01 to 3 (log-uniform).
+     *
+     * @param rnd the generator
+     * @return the vector
+     */
+    private static Vector randomHalfSide(Random rnd) {
+        return randomUnit(rnd).scale(Math.pow(10, -2 + 2.5 * rnd.nextDouble()));
+    }
+
+    /**
+     * The transmittance of one ray of a bundle after its gather, through gatheredTransmittance.
+     *
+     * @param bvh    the hierarchy
+     * @param ray    the ray (the same one, with the same direction, as the tree's answer is asked for)
+     * @param maxT   the distance to the square
+     * @param minK   the cut-off
+     * @param query  the scratch space, as the gather left it
+     * @return the transmittance
+     */
+    private static double gathered(BoundingVolumeHierarchy bvh, Ray ray, double maxT, double minK, Query query) {
+        Point3D p = ray.getP0();
+        Vector d = ray.getDir();
+        return bvh.gatheredTransmittance(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), maxT, minK, query);
+    }
+
+    /** How often gather gave each kind of answer, and how many rays were blocked or dimmed. */
+    private static final class GatherCounts {
+        private int none;
+        private int some;
+        private int tooMany;
+        private int rays;
+        private int darkened;
+    }
+
+    /**
+     * Traces random bundles through a scene: for every bundle whose gather gives a count, every ray
+     * from the apex to a random point of the square has the same gathered transmittance as its
+     * transmittance through the tree.
+     *
+     * @param rnd     the generator
+     * @param scene   the scene
+     * @param opaque  whether every body is opaque (the answers are then exactly 0 or 1)
+     * @param counts  the counters to add to
+     * @param tc      the test-case label
+     */
+    private static void checkBundles(Random rnd, TestScene scene, boolean opaque, GatherCounts counts, String tc) {
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries());
+        Query query = bvh.newQuery();
+        Query treeQuery = bvh.newQuery();
+        List<Intersectable> bodies = scene.bodies();
+        for (int bundle = 0; bundle < 60; ++bundle) {
+            double choice = rnd.nextDouble();
+            Point3D apex = choice < 0.25 ? randomPoint(rnd, Point3D.ZERO, 1.5 * scene.size())
+                    : pointIn(rnd, bodies.get(rnd.nextInt(bodies.size())));
+            if (choice > 0.7)
+                apex = apex.add(randomUnit(rnd).scale(rnd.nextDouble()));
+            Point3D c = apex.add(randomUnit(rnd).scale(0.5 + 30 * rnd.nextDouble()));
+            Vector a = randomHalfSide(rnd);
+            Vector b = randomHalfSide(rnd);
+            if (a.crossProduct(b).length() < 1e-3 * a.length() * b.length()
+                    || !query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), c.getX(), c.getY(), c.getZ(),
+                    a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ()))
+                continue; // a flat pyramid: the renderer walks the tree instead
+            int found = bvh.gather(query);
+            if (found < 0) {
+                ++counts.tooMany;
+                continue;
+            }
+            if (found == 0)
+                ++counts.none;
+            else
+                ++counts.some;
+            for (int r = 0; r < 40; ++r) {
+                Point3D target = squarePoint(rnd, c, a, b);
+                double distance = target.distance(apex);
+                Vector dir = target.subtract(apex).normalize();
+                Ray ray = new Ray(apex, dir);
+                int bundleNumber = bundle;
+                int rayNumber = r;
+                Point3D origin = apex;
+                Supplier<String> label = () -> tc + " bundle " + bundleNumber + " (apex " + origin + ", c " + c + ", a "
+                        + a + ", b " + b + ", gathered " + found + ") ray " + rayNumber + " " + ray + " distance "
+                        + distance;
+                for (double minK : new double[] { MIN_K, 0 }) {
+                    double expected = transmittance(bvh, ray, distance, minK, treeQuery);
+                    double actual = gathered(bvh, ray, distance, minK, query);
+                    if (opaque) {
+                        assertTrue(expected == 0 || expected == 1, () -> label.get() + ": an opaque scene gives 0 or 1");
+                        assertEquals(expected, actual, 0, label);
+                    } else
+                        assertEquals(expected, actual, 1e-12, label);
+                    if (found == 0)
+                        assertEquals(1, actual, 0, () -> label.get() + ": nothing gathered, nothing may block");
+                }
+                ++counts.rays;
+                if (transmittance(bvh, ray, distance, 0, treeQuery) < 1)
+                    ++counts.darkened;
+            }
+        }
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gather} and
+     * {@link BoundingVolumeHierarchy#gatheredTransmittance}: on seeded random scenes, every ray of a
+     * bundle whose bodies were gathered has the transmittance the tree gives it.
+     */
+    @Test
+    void testGatheredTransmittanceRandomScenes() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: opaque random scenes (with planes, a tube, cylinders, squares, bodies that are not
+        // Geometry, nested composites): 60 bundles each from random apexes on, in, near and away from
+        // the bodies to random squares, 40 rays each: gatheredTransmittance = transmittance, 0 or 1
+        Random rnd = new Random(7031);
+        GatherCounts opaque = new GatherCounts();
+        for (int s : new int[] { 0, 2, 3, 5, 6, 7, 8, 9, 13, 15, 17, 19 })
+            checkBundles(rnd, randomScene(rnd, s), true, opaque, "TC01: scene " + s);
+        assertCounts(opaque, "TC01");
+
+        // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque): equal within 1e-12
+        double[] kts = { 0.5, 0.9, 0.25, 1, 0.75, 0.999, 0.5, 0.9, 0 };
+        GatherCounts transparent = new GatherCounts();
+        for (int s : new int[] { 0, 2, 4, 5, 6, 8, 9, 13, 15, 18, 19 }) {
+            TestScene scene = randomScene(rnd, s);
+            for (Intersectable body : scene.bodies())
+                setKt(body, kts, rnd);
+            checkBundles(rnd, scene, false, transparent, "TC02: scene " + s);
+        }
+        assertCounts(transparent, "TC02");
+    }
+
+    /**
+     * Asserts that gather gave every kind of answer several times and that some rays were darkened,
+     * so the comparison is not vacuous.
+     *
+     * @param counts the counters
+     * @param tc     the test-case label
+     */
+    private static void assertCounts(GatherCounts counts, String tc) {
+        assertTrue(counts.none >= 5, tc + ": too few bundles with nothing gathered (" + counts.none + ")");
+        assertTrue(counts.some >= 20, tc + ": too few bundles with bodies gathered (" + counts.some + ")");
+        assertTrue(counts.tooMany >= 5, tc + ": too few bundles with too many bodies (" + counts.tooMany + ")");
+        assertTrue(counts.darkened >= 500 && counts.rays - counts.darkened >= 500,
+                tc + ": too few darkened (" + counts.darkened + ") or open (" + (counts.rays - counts.darkened)
+                        + ") rays of " + counts.rays);
+    }
+
+    /**
+     * A row of 40 small triangles at z = 0, triangle i around (i, 0, 0) (x from i − 0.1 to i + 0.1,
+     * y from −0.1 to 0.1).
+     *
+     * @return the composite
+     */
+    private static Geometries triangleRow() {
+        Geometries row = new Geometries();
+        for (int i = 0; i < 40; ++i)
+            row.add(new Triangle(new Point3D(i - 0.1, -0.1, 0), new Point3D(i + 0.1, -0.1, 0), new Point3D(i, 0.1, 0)));
+        return row;
+    }
+
+    /**
+     * Asserts that the rays of the last gathered bundle have the tree's transmittance.
+     *
+     * @param bvh   the hierarchy
+     * @param query the scratch space, as the gather left it
+     * @param apex  the apex
+     * @param c     the centre of the square
+     * @param a     half of one side
+     * @param b     half of the other side
+     * @param rnd   the generator
+     * @param tc    the test-case label
+     * @return how many of the rays were blocked
+     */
+    private static int assertBundle(BoundingVolumeHierarchy bvh, Query query, Point3D apex, Point3D c, Vector a,
+                                    Vector b, Random rnd, String tc) {
+        Query treeQuery = bvh.newQuery();
+        int blocked = 0;
+        for (int r = 0; r < 200; ++r) {
+            Point3D target = squarePoint(rnd, c, a, b);
+            Ray ray = new Ray(apex, target.subtract(apex));
+            double distance = target.distance(apex);
+            double expected = transmittance(bvh, ray, distance, MIN_K, treeQuery);
+            int number = r;
+            assertEquals(expected, gathered(bvh, ray, distance, MIN_K, query), 0,
+                    () -> tc + ": ray " + number + " to " + target);
+            if (expected == 0)
+                ++blocked;
+        }
+        return blocked;
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gather} on its boundaries: the scan, empty
+     * composites, the limit of 32 bodies, planes and bodies that are not geometries.
+     */
+    @Test
+    void testGatherBoundaries() {
+        Random rnd = new Random(32);
+        Point3D up = new Point3D(0, 0, 5);
+        Vector a = new Vector(1, 0, 0);
+        Vector b = new Vector(0, 1, 0);
+        Point3D below = new Point3D(0, 0, -1);
+        Point3D above = new Point3D(0, 0, 1);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: one sphere in the pyramid from (0, 0, 5) down to (±1, ±1, −1): 1 body, and the rays
+        // through it are blocked as through the tree
+        Geometries ball = new Geometries(new Sphere(new Point3D(0, 0, 2), 0.5));
+        BoundingVolumeHierarchy ballBvh = BoundingVolumeHierarchy.build(ball);
+        Query ballQuery = ballBvh.newQuery();
+        assertEquals(1, gather(ballBvh, ballQuery, up, below, a, b), "TC01: the sphere in the pyramid must be gathered");
+        assertTrue(assertBundle(ballBvh, ballQuery, up, below, a, b, rnd, "TC01") > 0, "TC01: some rays must be blocked");
+        // TC02: the same sphere beside the pyramid (at x = 3): nothing gathered, every ray open
+        Geometries aside = new Geometries(new Sphere(new Point3D(3, 0, 2), 0.5));
+        BoundingVolumeHierarchy asideBvh = BoundingVolumeHierarchy.build(aside);
+        Query asideQuery = asideBvh.newQuery();
+        assertEquals(0, gather(asideBvh, asideQuery, up, below, a, b), "TC02: a sphere beside the pyramid must not be gathered");
+        assertEquals(0, assertBundle(asideBvh, asideQuery, up, below, a, b, rnd, "TC02"), "TC02: no ray may be blocked");
+        // TC03: the 40 triangles of a row under a pyramid covering many of them: -1
+        BoundingVolumeHierarchy rowBvh = BoundingVolumeHierarchy.build(triangleRow());
+        Query rowQuery = rowBvh.newQuery();
+        assertEquals(-1, gather(rowBvh, rowQuery, new Point3D(20, 0, 10), new Point3D(20, 0, -10),
+                new Vector(50, 0, 0), new Vector(0, 1, 0)), "TC03: a pyramid over 40 triangles must give -1");
+        // TC04: a body that is not a Geometry is always gathered, even far from the pyramid: 1
+        Geometries wrapped = new Geometries(new Wrapper(new Sphere(new Point3D(50, 50, 50), 1)));
+        BoundingVolumeHierarchy wrappedBvh = BoundingVolumeHierarchy.build(wrapped);
+        assertEquals(1, gather(wrappedBvh, wrappedBvh.newQuery(), up, below, a, b),
+                "TC04: a body that is not a Geometry must be gathered");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the scan always gives -1: for a scene, an empty composite and a pyramid meeting nothing
+        Query scanQuery;
+        for (Geometries scene : List.of(ball, aside, new Geometries(), triangleRow())) {
+            BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(scene);
+            scanQuery = scan.newQuery();
+            assertEquals(-1, gather(scan, scanQuery, up, below, a, b), "TC11: the scan must give -1");
+            assertEquals(-1, gather(scan, scanQuery, new Point3D(100, 100, 100), new Point3D(100, 100, 110), a, b),
+                    "TC11: the scan must give -1 even where nothing is");
+        }
+        // TC12: an empty composite (also one of empty composites): 0, and every ray is open
+        for (Geometries empty : List.of(new Geometries(), new Geometries(new Geometries(), new Geometries(new Geometries())))) {
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(empty);
+            Query query = bvh.newQuery();
+            assertEquals(0, gather(bvh, query, up, below, a, b), "TC12: an empty composite gathers nothing");
+            assertEquals(1, gathered(bvh, new Ray(up, new Vector(0, 0, -1)), 6, MIN_K, query), 0, "TC12: nothing may block");
+        }
+        // TC13: a pyramid whose section at z = 0 is x ∈ [−0.5, 31.5]: exactly 32 triangles, gathered,
+        // and the rays agree with the tree
+        Point3D apex32 = new Point3D(15.5, 0, 10);
+        Point3D c32 = new Point3D(15.5, 0, -10);
+        Vector a32 = new Vector(32, 0, 0);
+        assertEquals(32, gather(rowBvh, rowQuery, apex32, c32, a32, b), "TC13: 32 triangles must be gathered");
+        assertTrue(assertBundle(rowBvh, rowQuery, apex32, c32, a32, b, rnd, "TC13") > 0, "TC13: some rays must be blocked");
+        // TC14: its section widened to x ∈ [−0.5, 32.5]: 33 triangles, -1
+        assertEquals(-1, gather(rowBvh, rowQuery, new Point3D(16, 0, 10), new Point3D(16, 0, -10), new Vector(33, 0, 0), b),
+                "TC14: 33 triangles are more than 32");
+        // TC15: the same query gathers again after -1: a pyramid over the triangles 0..3 only (x ∈ [−0.5, 3.5]): 4
+        Point3D apex4 = new Point3D(1.5, 0, 10);
+        Point3D c4 = new Point3D(1.5, 0, -10);
+        Vector a4 = new Vector(4, 0, 0);
+        assertEquals(4, gather(rowBvh, rowQuery, apex4, c4, a4, b), "TC15: 4 triangles must be gathered");
+        assertTrue(assertBundle(rowBvh, rowQuery, apex4, c4, a4, b, rnd, "TC15") > 0, "TC15: some rays must be blocked");
+
+        // TC16: a plane z = 0 alone: the pyramid from (0, 0, 5) to z = 1 does not meet it (0, every ray
+        // open); to z = −1 it crosses it (1, every ray blocked)
+        Geometries floor = new Geometries(new Plane(Point3D.ZERO, new Vector(0, 0, 1)));
+        BoundingVolumeHierarchy floorBvh = BoundingVolumeHierarchy.build(floor);
+        Query floorQuery = floorBvh.newQuery();
+        assertEquals(0, gather(floorBvh, floorQuery, up, above, a, b), "TC16: a plane the pyramid does not reach");
+        assertEquals(0, assertBundle(floorBvh, floorQuery, up, above, a, b, rnd, "TC16"), "TC16: no ray may be blocked");
+        assertEquals(1, gather(floorBvh, floorQuery, up, below, a, b), "TC16: a plane the pyramid crosses");
+        assertEquals(200, assertBundle(floorBvh, floorQuery, up, below, a, b, rnd, "TC16"), "TC16: every ray must be blocked");
+        // TC17: the pyramid's base on the plane (z = 0): gathered (1), every ray ends on it and is blocked
+        assertEquals(1, gather(floorBvh, floorQuery, up, Point3D.ZERO, a, b), "TC17: a plane touching the base");
+        assertEquals(200, assertBundle(floorBvh, floorQuery, up, Point3D.ZERO, a, b, rnd, "TC17"),
+                "TC17: a hit at the ray's end blocks it");
+        // TC18: the plane behind the apex (the pyramid from (0, 0, 5) up to z = 10): 0
+        assertEquals(0, gather(floorBvh, floorQuery, up, new Point3D(0, 0, 10), a, b), "TC18: a plane behind the apex");
+        // TC19: two planes, the pyramid crossing only z = 0: 1, and the rays blocked by it
+        Geometries two = new Geometries(new Plane(Point3D.ZERO, new Vector(0, 0, 1)),
+                new Plane(new Point3D(0, 0, 20), new Vector(0, 0, 1)));
+        BoundingVolumeHierarchy twoBvh = BoundingVolumeHierarchy.build(two);
+        Query twoQuery = twoBvh.newQuery();
+        assertEquals(1, gather(twoBvh, twoQuery, up, below, a, b), "TC19: only the crossed plane must be gathered");
+        assertEquals(200, assertBundle(twoBvh, twoQuery, up, below, a, b, rnd, "TC19"), "TC19: every ray must be blocked");
     }
 }

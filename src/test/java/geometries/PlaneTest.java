@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -197,5 +198,43 @@ class PlaneTest {
 
         // TC12: max distance just short of the point (null)
         assertNull(p.findGeoIntersections(ray, 1 - 1e-6), "TC12: a point just beyond the max distance must be excluded");
+    }
+
+    /**
+     * Test method for {@link geometries.Plane#mayMeet(ShadowFrustum)}: the plane is gathered for a
+     * bundle of shadow rays only when the bundle's pyramid reaches it.
+     */
+    @Test
+    void testMayMeet() {
+        // the pyramid from the apex (0, 0, 5) to the square (±1, ±1, −1) below it
+        ShadowFrustum frustum = new ShadowFrustum();
+        assertTrue(frustum.set(0, 0, 5, 0, 0, -1, 1, 0, 0, 0, 1, 0), "the pyramid must be set");
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the plane z = 0 crosses the pyramid: true
+        assertTrue(new Plane(Point3D.ZERO, new Vector(0, 0, 1)).mayMeet(frustum), "TC01: a crossing plane may meet");
+        // TC02: the slanted plane x + z = 2 crosses it: true
+        assertTrue(new Plane(new Point3D(2, 0, 0), new Vector(1, 0, 1)).mayMeet(frustum),
+                "TC02: a slanted crossing plane may meet");
+        // TC03: the plane z = −2, below the whole pyramid: false
+        assertFalse(new Plane(new Point3D(0, 0, -2), new Vector(0, 0, 1)).mayMeet(frustum),
+                "TC03: a plane below the pyramid must not meet");
+        // TC04: the plane z = 6, above the apex (its normal pointing down): false
+        assertFalse(new Plane(new Point3D(3, 3, 6), new Vector(0, 0, -1)).mayMeet(frustum),
+                "TC04: a plane above the apex must not meet");
+        // TC05: the plane x = 5 beside the pyramid: false
+        assertFalse(new Plane(new Point3D(5, 0, 0), new Vector(1, 0, 0)).mayMeet(frustum),
+                "TC05: a plane beside the pyramid must not meet");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the plane z = 5 through the apex only: true
+        assertTrue(new Plane(new Point3D(0, 0, 5), new Vector(0, 0, 1)).mayMeet(frustum),
+                "TC11: a plane through the apex may meet");
+        // TC12: the base's plane z = −1: true
+        assertTrue(new Plane(new Point3D(0, 0, -1), new Vector(0, 0, 1)).mayMeet(frustum),
+                "TC12: the base's plane may meet");
+        // TC13: the plane x = 1 touching the base's edge: true
+        assertTrue(new Plane(new Point3D(1, 0, 0), new Vector(1, 0, 0)).mayMeet(frustum),
+                "TC13: a plane touching the base's edge may meet");
     }
 }

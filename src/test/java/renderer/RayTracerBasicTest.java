@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertColor;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
@@ -524,5 +526,115 @@ class RayTracerBasicTest {
         // ===== Boundary Values Tests =====
         // TC11: no pixel differs by more than a few levels
         assertTrue(worst <= 4, "TC11: a pixel differs by " + worst + " levels");
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Shadow bundles: the rays of a soft shadow are traced as one bundle (the bodies its pyramid meets
+    // are gathered once); the pictures must stay those of a brute-force scan of every body. The scene:
+    // a floor, two opaque spheres, a sphere of 484 triangles, a glass sphere (kT 0.5), lit by a square
+    // light of edge 30 at height 100; the camera looks straight down (floor x, y from -60 to 60).
+    // ---------------------------------------------------------------------------------------------
+
+    private static final int BUNDLE_PICTURE_SIZE = 90;
+    private static final Point3D BUNDLE_LIGHT = new Point3D(0, 0, 100);
+    private static final double BUNDLE_INTENSITY = 200;
+
+    /** The bundle scene: the floor is its first body. */
+    private static Scene bundleScene() {
+        Scene scene = new Scene("shadow bundles");
+        Material matte = new Material().setKd(0.5);
+        scene.geometries.add(floor(new Material().setKd(1), Color.BLACK),
+                new Sphere(new Point3D(-25, 15, 15), 8).setMaterial(matte),
+                new Sphere(new Point3D(20, -25, 10), 5).setMaterial(matte),
+                new Sphere(new Point3D(20, 20, 20), 7).setMaterial(new Material().setKd(0.2).setKt(0.5)));
+        for (Triangle triangle : benchmark.SphereMesh.triangles(new Point3D(-10, -20, 25), 9, 12, 22))
+            scene.geometries.add(triangle.setMaterial(matte));
+        scene.lights.add(new PointLight(new Color(BUNDLE_INTENSITY, BUNDLE_INTENSITY, BUNDLE_INTENSITY), BUNDLE_LIGHT)
+                .setEdgesSize(30).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
+        return scene;
+    }
+
+    /** The camera of the bundle pictures, straight down onto the floor. */
+    private static Camera bundleCamera() {
+        return new Camera(new Point3D(0, 0, 1000), DOWN, new Vector(0, 1, 0)).setVpSize(120, 120).setVpDistance(1000);
+    }
+
+    /** Renders the bundle scene through the hierarchy (with bundles) or a brute-force scan, and writes it. */
+    private static ImageWriter renderBundles(boolean bruteForce, boolean adaptive) {
+        RayTracerBasic tracer = new RayTracerBasic(bundleScene());
+        tracer.setBruteForce(bruteForce);
+        ImageWriter image = new ImageWriter("bundles" + (adaptive ? "-adaptive" : "") + (bruteForce ? "-scan" : "-bvh"),
+                BUNDLE_PICTURE_SIZE, BUNDLE_PICTURE_SIZE, PICTURE_FOLDER.resolve("bundles"));
+        Render render = new Render().setImageWriter(image).setCamera(bundleCamera()).setRayTracer(tracer)
+                .setSoftShadows(true).setSqrtBeamNum(5).setAdaptiveSoftShadows(adaptive)
+                .setSeed(RayTracerBase.DEFAULT_SEED);
+        render.renderImage();
+        render.writeToImage();
+        return image;
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#calcSoftShadows}: shadow bundles change no picture — a soft
+     * shadow scene of spheres, a triangle mesh and a glass sphere renders, with adaptive sampling off
+     * and on, as through a brute-force scan of every body, and it has a penumbra.
+     */
+    @Test
+    void testShadowBundlesKeepPictures() {
+        // n·l at each pixel that sees the floor (NaN elsewhere), found by brute force
+        Scene reference = bundleScene();
+        Plane floor = (Plane) reference.geometries.getGeometries().get(0);
+        Camera camera = bundleCamera();
+        double[][] floorNl = new double[BUNDLE_PICTURE_SIZE][BUNDLE_PICTURE_SIZE];
+        for (int y = 0; y < BUNDLE_PICTURE_SIZE; ++y)
+            for (int x = 0; x < BUNDLE_PICTURE_SIZE; ++x) {
+                Ray ray = camera.constructRayThroughPixel(BUNDLE_PICTURE_SIZE, BUNDLE_PICTURE_SIZE, x, y);
+                GeoPoint hit = ray.findClosestGeoPoint(reference.geometries.findGeoIntersections(ray));
+                floorNl[y][x] = hit == null || hit.geometry != floor ? Double.NaN
+                        : BUNDLE_LIGHT.getZ() / hit.point.distance(BUNDLE_LIGHT);
+            }
+        int pixels = BUNDLE_PICTURE_SIZE * BUNDLE_PICTURE_SIZE;
+        for (boolean adaptive : new boolean[] { false, true }) {
+            String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
+            String shadow = adaptive ? "TC12 (adaptive sampling)" : "TC11";
+            ImageWriter fast = renderBundles(false, adaptive);
+            ImageWriter scan = renderBundles(true, adaptive);
+            int differing = 0;
+            int worst = 0;
+            // the share of the light each floor pixel gets: its grey over the unshadowed kD·I·(n·l)
+            double darkest = Double.POSITIVE_INFINITY;
+            double brightest = 0;
+            List<Double> shares = new ArrayList<>();
+            for (int y = 0; y < BUNDLE_PICTURE_SIZE; ++y)
+                for (int x = 0; x < BUNDLE_PICTURE_SIZE; ++x) {
+                    int a = fast.getPixel(x, y).getRGB();
+                    int b = scan.getPixel(x, y).getRGB();
+                    if (a != b) {
+                        ++differing;
+                        for (int shift = 0; shift < 24; shift += 8)
+                            worst = Math.max(worst, Math.abs(((a >> shift) & 0xFF) - ((b >> shift) & 0xFF)));
+                    }
+                    if (Double.isNaN(floorNl[y][x]))
+                        continue;
+                    double share = fast.getPixel(x, y).getRed() / (BUNDLE_INTENSITY * floorNl[y][x]);
+                    shares.add(share);
+                    darkest = Math.min(darkest, share);
+                    brightest = Math.max(brightest, share);
+                }
+            int penumbra = 0;
+            for (double share : shares)
+                if (share > darkest + 0.05 && share < brightest - 0.05)
+                    ++penumbra;
+            // ===== Equivalence Partitions Tests =====
+            // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
+            // force, by at most 2 levels
+            assertTrue(differing <= pixels / 1000, same + ": " + differing + " of " + pixels + " pixels differ");
+            assertTrue(worst <= 2, same + ": a pixel differs by " + worst + " levels");
+            // ===== Boundary Values Tests =====
+            // TC11: adaptive sampling off; TC12: on: the floor has an umbra (share < 0.02), fully lit
+            // parts (share > 0.98) and a penumbra of at least 50 pixels strictly between them
+            assertTrue(darkest < 0.02 && brightest > 0.98, shadow + ": the floor must have an umbra and lit parts, got "
+                    + darkest + " to " + brightest);
+            assertTrue(penumbra >= 50, shadow + ": the floor must have a penumbra, found " + penumbra + " pixels");
+        }
     }
 }
