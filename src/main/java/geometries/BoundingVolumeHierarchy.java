@@ -67,9 +67,11 @@ public final class BoundingVolumeHierarchy {
         private Geometry geometry;
         private double ktr;
         private final ShadowFrustum frustum = new ShadowFrustum();
-        /** The tree's bodies {@link #gather} found, and how many. */
+        /** The tree's bodies {@link #gather} found, and how many: -1 when they were too many. */
         private final int[] gathered = new int[MAX_GATHERED];
         private int gatheredCount;
+        /** When {@link #gather} found too many bodies: the node below which all of them lie. */
+        private int subtree;
         /** The unbounded bodies {@link #gather} found, and how many. */
         private final int[] gatheredUnbounded;
         private int unboundedCount;
@@ -218,51 +220,61 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Gathers the bodies a bundle of shadow rays may meet, for {@link #gatheredTransmittance}: the
-     * unbounded bodies and the tree's bodies whose boxes meet the query's {@link Query#getFrustum()
-     * frustum} (set it first), and the intersectables that are not geometries.
+     * unbounded bodies and the tree's bodies whose boxes (planes, for unbounded bodies) meet the
+     * query's {@link Query#getFrustum() frustum} (set it first). When more than a few of the tree's
+     * bodies meet it, their smallest subtree is kept instead. A brute-force {@link #scan} gathers
+     * every body.
      *
      * @param query this thread's scratch space, its frustum set to the bundle's pyramid
-     * @return the number of bodies gathered (0 when no ray of the bundle can be blocked), or -1 when
-     *         more than a few bodies of the tree meet the frustum, or for a brute-force {@link #scan}:
-     *         the rays should then walk the tree with {@link #transmittance}
+     * @return false when no ray of the bundle can meet anything: then no ray needs to be tested
      */
-    public int gather(Query query) {
-        if (!culling)
-            return -1;
+    public boolean gather(Query query) {
         ShadowFrustum frustum = query.frustum;
         int found = 0;
         for (int i = 0; i < unbounded.length; ++i)
-            if (unbounded[i].mayMeet(frustum))
+            if (!culling || unbounded[i].mayMeet(frustum))
                 query.gatheredUnbounded[found++] = i;
         query.unboundedCount = found;
         query.gatheredCount = 0;
-        if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0) && !gatherTree(query))
-            return -1;
-        return found + query.gatheredCount + others.length;
+        if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0))
+            gatherTree(query);
+        return found > 0 || query.gatheredCount != 0 || others.length > 0;
     }
 
-    /** Walks the nodes whose boxes meet the frustum; false when too many bodies are found. */
-    private boolean gatherTree(Query query) {
+    /**
+     * Walks the nodes whose boxes meet the frustum and gathers the bodies of their leaves, or when
+     * they are too many, the node where the walk first had to enter both children.
+     */
+    private void gatherTree(Query query) {
         ShadowFrustum frustum = query.frustum;
         int[] stack = query.stack;
         int top = 0;
         int node = 0;
+        int subtree = 0;
+        boolean branched = false;
         while (true) {
             int first = nodeLinks[2 * node];
             int count = nodeLinks[2 * node + 1];
+            if (!branched) // still on the one path from the root
+                subtree = node;
             if (count < 0) {
                 boolean leftMeets = frustum.meetsBox(nodeBounds, 6 * first);
                 boolean rightMeets = frustum.meetsBox(nodeBounds, 6 * first + 6);
                 if (leftMeets || rightMeets) {
-                    if (leftMeets && rightMeets)
+                    if (leftMeets && rightMeets) {
                         stack[top++] = first + 1;
+                        branched = true;
+                    }
                     node = leftMeets ? first : first + 1;
                     continue;
                 }
-            } else if (!gatherLeaf(query, first, count))
-                return false;
+            } else if (!gatherLeaf(query, first, count)) {
+                query.gatheredCount = -1;
+                query.subtree = subtree;
+                return;
+            }
             if (top == 0)
-                return true;
+                return;
             node = stack[--top];
         }
     }
@@ -300,9 +312,13 @@ public final class BoundingVolumeHierarchy {
         for (int i = 0; i < query.unboundedCount; ++i)
             if (!visit(unbounded[query.gatheredUnbounded[i]], query, ox, oy, oz, dx, dy, dz, true, minK))
                 return 0;
-        for (int i = 0; i < query.gatheredCount; ++i)
-            if (!visitBody(query.gathered[i], query, ox, oy, oz, dx, dy, dz, true, minK))
+        if (query.gatheredCount < 0) {
+            if (!walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK))
                 return 0;
+        } else
+            for (int i = 0; i < query.gatheredCount; ++i)
+                if (!visitBody(query.gathered[i], query, ox, oy, oz, dx, dy, dz, true, minK))
+                    return 0;
         return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
     }
 
@@ -334,20 +350,28 @@ public final class BoundingVolumeHierarchy {
         for (Geometry body : unbounded)
             if (!visit(body, query, ox, oy, oz, dx, dy, dz, transmittance, minK))
                 return false;
-        if (nodesCount == 0)
-            return true;
+        return nodesCount == 0 || walk(query, 0, ox, oy, oz, dx, dy, dz, transmittance, minK);
+    }
+
+    /**
+     * Walks the subtree below a node, the way {@link #traverse} walks the tree.
+     *
+     * @return false when a transmittance walk stopped early (the light is blocked)
+     */
+    private boolean walk(Query query, int root, double ox, double oy, double oz, double dx, double dy, double dz,
+                         boolean transmittance, double minK) {
         double ix = 1 / dx;
         double iy = 1 / dy;
         double iz = 1 / dz;
         int nearX = ix < 0 ? 3 : 0;
         int nearY = iy < 0 ? 3 : 0;
         int nearZ = iz < 0 ? 3 : 0;
-        if (!boxHit(0, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT))
+        if (!boxHit(root, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT))
             return true;
         int negative = (dx < 0 ? 1 : 0) | (dy < 0 ? 2 : 0) | (dz < 0 ? 4 : 0);
         int[] stack = query.stack;
         int top = 0;
-        int node = 0;
+        int node = root;
         while (true) {
             int first = nodeLinks[2 * node];
             int count = nodeLinks[2 * node + 1];

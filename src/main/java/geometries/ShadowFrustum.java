@@ -6,9 +6,12 @@ package geometries;
  * none of the rays, so a hierarchy can set bodies aside for the whole bundle at once: the frustum
  * culling of packet ray tracers.
  * <p>
- * The tests are conservative: a body is set aside only when it is outside the pyramid by a margin
- * (a small fraction of the pyramid's size), so rounding in the rays' own arithmetic never hides a
- * blocker. An instance is scratch space, set again for every bundle, and used by one thread.
+ * The pyramid may have a thickness: rays that start up to that far from the apex and end as far
+ * from the base (shadow rays moved off the surface on either side of it) stay within that distance
+ * of the pyramid. The tests are conservative: a body is set aside only when it is outside the
+ * pyramid by more than the thickness plus a margin (a small fraction of the pyramid's size), so
+ * rounding in the rays' own arithmetic never hides a blocker. An instance is scratch space, set
+ * again for every bundle, and used by one thread.
  */
 public final class ShadowFrustum {
     /** How far outside, relative to the pyramid's size, a box or plane must be to be set aside. */
@@ -23,9 +26,12 @@ public final class ShadowFrustum {
     private final double[] vertices = new double[15];
     /** The box around the vertices, {minX, minY, minZ, maxX, maxY, maxZ}. */
     private final double[] hull = new double[6];
+    /** The thickness plus the margin: how far outside a face a box or plane must be. */
     private double margin;
     /** The least distance of an inner point from a face, below which the pyramid counts as flat. */
     private double flatness;
+    /** Whether the last {@link #set} succeeded: until one does, every box and plane may meet the pyramid. */
+    private boolean valid;
 
     /**
      * Sets the pyramid from an apex to the parallelogram c ± a ± b.
@@ -42,11 +48,15 @@ public final class ShadowFrustum {
      * @param bx half of the other side of the base, x
      * @param by half of the other side of the base, y
      * @param bz half of the other side of the base, z
+     * @param thickness how far the rays may stray from the pyramid, 0 or more
      * @return false when the pyramid is flat (the apex in the base's plane, or a degenerate base):
-     *         it can then not set anything aside, and must not be used
+     *         it then sets nothing aside
+     * @throws IllegalArgumentException when the thickness is negative or not a number
      */
     public boolean set(double ox, double oy, double oz, double cx, double cy, double cz,
-                       double ax, double ay, double az, double bx, double by, double bz) {
+                       double ax, double ay, double az, double bx, double by, double bz, double thickness) {
+        if (!(thickness >= 0))
+            throw new IllegalArgumentException("the thickness of a shadow frustum must be 0 or more, got " + thickness);
         double[] v = vertices;
         setVertex(0, ox, oy, oz);
         setVertex(1, cx + ax + bx, cy + ay + by, cz + az + bz);
@@ -66,15 +76,17 @@ public final class ShadowFrustum {
         }
         for (int k = 0; k < 3; ++k)
             size += hull[3 + k] - hull[k];
-        margin = MARGIN * size;
+        margin = MARGIN * size + thickness;
         flatness = FLAT * size;
+        valid = false;
         for (int side = 0; side < 4; ++side)
             if (!setPlane(side, 1 + side, 1 + (side + 1) % 4, cx, cy, cz))
                 return false;
         double nx = ay * bz - az * by;
         double ny = az * bx - ax * bz;
         double nz = ax * by - ay * bx;
-        return setPlane(4, nx, ny, nz, nx * cx + ny * cy + nz * cz, ox, oy, oz);
+        valid = setPlane(4, nx, ny, nz, nx * cx + ny * cy + nz * cz, ox, oy, oz);
+        return valid;
     }
 
     private void setVertex(int i, double x, double y, double z) {
@@ -125,9 +137,12 @@ public final class ShadowFrustum {
      *
      * @param boxes  an array of boxes, {minX, minY, minZ, maxX, maxY, maxZ} each
      * @param offset where the box starts in the array
-     * @return false only when the box lies outside the pyramid by more than the margin
+     * @return false only when the box lies outside the pyramid by more than the thickness and margin
+     *         (never after a refused {@link #set})
      */
     public boolean meetsBox(double[] boxes, int offset) {
+        if (!valid)
+            return true;
         double m = margin;
         double[] h = hull;
         if (boxes[offset] > h[3] + m || boxes[offset + 1] > h[4] + m || boxes[offset + 2] > h[5] + m
@@ -157,9 +172,12 @@ public final class ShadowFrustum {
      * @param qx a point on the plane, x
      * @param qy a point on the plane, y
      * @param qz a point on the plane, z
-     * @return false only when all of the pyramid lies on one side of the plane, farther than the margin
+     * @return false only when all of the pyramid lies on one side of the plane, farther than the
+     *         thickness and margin (never after a refused {@link #set})
      */
     public boolean meetsPlane(double nx, double ny, double nz, double qx, double qy, double qz) {
+        if (!valid)
+            return true;
         double[] v = vertices;
         boolean above = false;
         boolean below = false;

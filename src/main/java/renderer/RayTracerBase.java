@@ -1,8 +1,8 @@
 package renderer;
 
 import java.util.Queue;
-import java.util.SplittableRandom;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.function.ToLongFunction;
 
 import primitives.Color;
 import primitives.Ray;
@@ -133,17 +133,29 @@ public abstract class RayTracerBase {
 
     /** @return the number of rays traced from the camera by renders of this ray tracer so far */
     public long getPrimaryRaysCount() {
-        long count = 0;
-        for (ThreadState state : threadStates)
-            count += state.primaryRays;
-        return count;
+        return sum(state -> state.primaryRays);
     }
 
     /** @return the number of shadow rays traced by this ray tracer so far */
     public long getShadowRaysCount() {
+        return sum(state -> state.shadowRays);
+    }
+
+    /**
+     * The shadow rays of soft shadows whose whole bundle (the rays from one point to a light's square)
+     * was found open: nothing can block any of them, so no body was tested. They are counted in
+     * {@link #getShadowRaysCount()} too.
+     *
+     * @return the number of such rays traced by this ray tracer so far
+     */
+    public long getOpenShadowRaysCount() {
+        return sum(state -> state.openShadowRays);
+    }
+
+    private long sum(ToLongFunction<ThreadState> counter) {
         long count = 0;
         for (ThreadState state : threadStates)
-            count += state.shadowRays;
+            count += counter.applyAsLong(state);
         return count;
     }
 
@@ -157,7 +169,7 @@ public abstract class RayTracerBase {
      */
     ThreadState startPixel(int j, int i) {
         ThreadState state = threadState.get();
-        state.random = new SplittableRandom(pixelSeed(j, i));
+        state.random.reseed(pixelSeed(j, i));
         return state;
     }
 
@@ -174,7 +186,7 @@ public abstract class RayTracerBase {
     }
 
     private ThreadState newThreadState() {
-        ThreadState state = new ThreadState(new SplittableRandom(seed));
+        ThreadState state = new ThreadState(new SplitMix64(seed));
         threadStates.add(state);
         return state;
     }

@@ -193,11 +193,14 @@ public class RayTracerBasic extends RayTracerBase {
      */
     double calcSoftShadows(AreaLightSource light, Ray centreRay, double centreDistance, Vector n, Point3D point,
                            ThreadState state) {
-        JitteredGrid grid = getBeamGrid();
-        double[] samples = state.points(grid);
-        grid.sample(state.random, samples);
         BoundingVolumeHierarchy bvh = accelerator();
         LightSquare square = new LightSquare(light, point, n, bvh, state.query(bvh));
+        JitteredGrid grid = getBeamGrid();
+        double[] samples = state.points(grid);
+        if (square.isOpen()) // the points are not needed, but the numbers drawn after them must stay the same
+            state.random.skip(2L * grid.getSamplesCount());
+        else
+            grid.sample(state.random, samples);
         double ktr = square.visibility(centreRay, centreDistance);
         int outline = grid.getOutlineCount();
         ktr += square.visibility(samples, 0, outline);
@@ -208,6 +211,8 @@ public class RayTracerBasic extends RayTracerBase {
             rays = 1 + grid.getSamplesCount();
         }
         state.shadowRays += rays;
+        if (square.isOpen())
+            state.openShadowRays += rays;
         return ktr / rays;
     }
 
@@ -220,7 +225,7 @@ public class RayTracerBasic extends RayTracerBase {
     private static final class LightSquare {
         /**
          * How far, relative to the reach of the square, the square must lie off the point's tangent
-         * plane for all its rays to leave the surface on one side.
+         * plane for all its rays to leave the surface on the same side.
          */
         private static final double SIDE_MARGIN = 1e-6;
         private final double cx;
@@ -242,7 +247,8 @@ public class RayTracerBasic extends RayTracerBase {
         private final double nz;
         private final BoundingVolumeHierarchy bvh;
         private final BoundingVolumeHierarchy.Query query;
-        /** The number of bodies gathered for the bundle, or -1 when its rays walk the whole hierarchy. */
+        /** 1 when the bundle's rays are tested against the bodies gathered for it, 0 when nothing can
+         * block them, -1 when they walk the whole hierarchy. */
         private final int gathered;
 
         LightSquare(AreaLightSource light, Point3D p, Vector n, BoundingVolumeHierarchy bvh,
@@ -273,10 +279,12 @@ public class RayTracerBasic extends RayTracerBase {
         }
 
         /**
-         * Gathers the bodies the bundle's rays may meet, when all the rays leave the surface on the
-         * same side: they then start at one point, DELTA off the surface.
+         * Gathers the bodies the bundle's rays may meet. When all the rays leave the surface on the
+         * same side, they start at one point DELTA off the surface, the apex of their pyramid;
+         * otherwise the pyramid starts at the point itself and is DELTA thick.
          *
-         * @return the number of bodies gathered, or -1 when the rays must walk the hierarchy
+         * @return 1 when bodies were gathered, 0 when no ray can be blocked, -1 when the rays must
+         *         walk the hierarchy
          */
         private int gather() {
             double half = edges / 2;
@@ -294,11 +302,15 @@ public class RayTracerBasic extends RayTracerBase {
             double spread = Math.abs(nx * ax + ny * ay + nz * az) + Math.abs(nx * bx + ny * by + nz * bz);
             double margin = SIDE_MARGIN * Ray.DELTA * (Math.sqrt(wx * wx + wy * wy + wz * wz) + edges);
             double side = centre - spread > margin ? 1 : centre + spread < -margin ? -1 : 0;
+            double thickness = side == 0 ? Ray.DELTA : 0;
             ShadowFrustum frustum = query.getFrustum();
-            if (side == 0 || !frustum.set(px + side * nx, py + side * ny, pz + side * nz,
-                    cx + side * nx, cy + side * ny, cz + side * nz, ax, ay, az, bx, by, bz))
-                return -1;
-            return bvh.gather(query);
+            return frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
+                    cz + side * nz, ax, ay, az, bx, by, bz, thickness) ? (bvh.gather(query) ? 1 : 0) : -1;
+        }
+
+        /** @return true when no ray of the bundle can be blocked: each lets all the light through */
+        boolean isOpen() {
+            return gathered == 0;
         }
 
         /**

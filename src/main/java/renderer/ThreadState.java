@@ -1,7 +1,5 @@
 package renderer;
 
-import java.util.SplittableRandom;
-
 import geometries.BoundingVolumeHierarchy;
 
 /**
@@ -10,11 +8,13 @@ import geometries.BoundingVolumeHierarchy;
  */
 final class ThreadState {
     /** The random stream of the pixel being rendered. */
-    SplittableRandom random;
+    final SplitMix64 random;
     /** The rays traced from the camera by this thread. */
     long primaryRays;
     /** The shadow rays traced by this thread. */
     long shadowRays;
+    /** The shadow rays of this thread whose bundle nothing could block. */
+    long openShadowRays;
     private double[] points = new double[0];
     private BoundingVolumeHierarchy queried;
     private BoundingVolumeHierarchy.Query query;
@@ -24,7 +24,7 @@ final class ThreadState {
      *
      * @param random the stream for rays traced before any pixel is started
      */
-    ThreadState(SplittableRandom random) {
+    ThreadState(SplitMix64 random) {
         this.random = random;
     }
 

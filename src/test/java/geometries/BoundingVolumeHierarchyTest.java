@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -1070,8 +1071,13 @@ class BoundingVolumeHierarchyTest {
 
     // ---------------------------------------------------------------- shadow bundles
 
+    /** The thickness of the renderer's bundles whose rays leave the surface on both sides (Ray.DELTA). */
+    private static final double THICK = 0.1;
+    /** The most bodies of the tree gather keeps one by one (BoundingVolumeHierarchy.MAX_GATHERED). */
+    private static final int MAX_GATHERED = 32;
+
     /**
-     * Sets the query's frustum to a bundle's pyramid and gathers for it.
+     * Sets the query's frustum to a bundle's pyramid, without thickness, and gathers for it.
      *
      * @param bvh   the hierarchy (or scan)
      * @param query the scratch space
@@ -1081,9 +1087,28 @@ class BoundingVolumeHierarchyTest {
      * @param b     half of the other side
      * @return what {@link BoundingVolumeHierarchy#gather} returns
      */
-    private static int gather(BoundingVolumeHierarchy bvh, Query query, Point3D apex, Point3D c, Vector a, Vector b) {
+    private static boolean gather(BoundingVolumeHierarchy bvh, Query query, Point3D apex, Point3D c, Vector a,
+                                  Vector b) {
+        return gather(bvh, query, apex, c, a, b, 0);
+    }
+
+    /**
+     * Sets the query's frustum to a bundle's (thick) pyramid and gathers for it.
+     *
+     * @param bvh       the hierarchy (or scan)
+     * @param query     the scratch space
+     * @param apex      the apex
+     * @param c         the centre of the light's square
+     * @param a         half of one side of the square
+     * @param b         half of the other side
+     * @param thickness how far the rays may stray from the pyramid
+     * @return what {@link BoundingVolumeHierarchy#gather} returns
+     */
+    private static boolean gather(BoundingVolumeHierarchy bvh, Query query, Point3D apex, Point3D c, Vector a,
+                                  Vector b, double thickness) {
         assertTrue(query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), c.getX(), c.getY(), c.getZ(),
-                a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ()), "the bundle's pyramid must not be flat");
+                a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), thickness),
+                "the bundle's pyramid must not be flat");
         return bvh.gather(query);
     }
 
@@ -1115,6 +1140,85 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
+     * A point moved by a random vector no longer than a length (a third of the time exactly that long).
+     *
+     * @param rnd    the generator
+     * @param point  the point
+     * @param length the largest move (0: the point itself)
+     * @return the moved point
+     */
+    private static Point3D stray(Random rnd, Point3D point, double length) {
+        if (length == 0)
+            return point;
+        Vector move = randomUnit(rnd);
+        double scale = rnd.nextInt(3) == 0 ? length : length * rnd.nextDouble();
+        return new Point3D(point.getX() + scale * move.getX(), point.getY() + scale * move.getY(),
+                point.getZ() + scale * move.getZ());
+    }
+
+    /**
+     * A random point on the surface of a body (up to rounding), to put a bundle's apex on.
+     *
+     * @param rnd  the generator
+     * @param body the body
+     * @return the point
+     */
+    private static Point3D pointOn(Random rnd, Intersectable body) {
+        if (body instanceof Sphere sphere)
+            return sphere.getCenter().add(randomUnit(rnd).scale(sphere.getRadius()));
+        if (body instanceof Tube tube) { // and Cylinder: a point of the side
+            Ray axis = tube.getAxisRay();
+            double t = tube instanceof Cylinder cylinder ? cylinder.getHeight() * rnd.nextDouble()
+                    : 10 * (2 * rnd.nextDouble() - 1);
+            return axis.getPoint(t).add(perpendicular(rnd, axis.getDir()).scale(tube.getRadius()));
+        }
+        if (body instanceof Plane plane)
+            return plane.getQ0().add(perpendicular(rnd, plane.getNormal()).scale(0.1 + 10 * rnd.nextDouble()));
+        if (body instanceof Wrapper wrapper)
+            return pointOn(rnd, wrapper.inner);
+        if (body instanceof Geometries composite)
+            return pointOn(rnd, composite.getGeometries().get(0));
+        return pointIn(rnd, body); // a polygon's inner points lie on it
+    }
+
+    /**
+     * A random unit vector orthogonal to a direction.
+     *
+     * @param rnd the generator
+     * @param dir the direction
+     * @return the vector
+     */
+    private static Vector perpendicular(Random rnd, Vector dir) {
+        while (true) {
+            Vector cross = dir.crossProduct(randomUnit(rnd));
+            if (cross.length() > 1e-3)
+                return cross.normalize();
+        }
+    }
+
+    /**
+     * How many of a composite's bounded bodies (the tree's bodies) have boxes the frustum meets: when
+     * more than {@value #MAX_GATHERED}, gather keeps a subtree instead of the bodies.
+     *
+     * @param item    the composite or body
+     * @param frustum the frustum, set
+     * @return the count
+     */
+    private static int boxesMeeting(Intersectable item, ShadowFrustum frustum) {
+        if (item instanceof Geometries composite) {
+            int count = 0;
+            for (Intersectable child : composite.getGeometries())
+                count += boxesMeeting(child, frustum);
+            return count;
+        }
+        if (item instanceof Geometry geometry) {
+            double[] box = geometry.bounds();
+            return box != null && frustum.meetsBox(box, 0) ? 1 : 0;
+        }
+        return 0;
+    }
+
+    /**
      * The transmittance of one ray of a bundle after its gather, through gatheredTransmittance.
      *
      * @param bvh    the hierarchy
@@ -1130,19 +1234,31 @@ class BoundingVolumeHierarchyTest {
         return bvh.gatheredTransmittance(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), maxT, minK, query);
     }
 
-    /** How often gather gave each kind of answer, and how many rays were blocked or dimmed. */
+    /**
+     * How often gather gave each kind of answer, and how many rays were blocked or dimmed. The two
+     * kinds of true cannot be told apart through the API: they are told by how many of the tree's
+     * boxes meet the frustum.
+     */
     private static final class GatherCounts {
+        /** gather gave false. */
         private int none;
-        private int some;
-        private int tooMany;
+        /** gather gave true, at most 32 of the tree's boxes meet the frustum: the bodies are kept. */
+        private int few;
+        /** gather gave true, more than 32 of the tree's boxes meet the frustum: a subtree is kept. */
+        private int subtree;
+        /** bundles with a thickness (apex on a body's surface). */
+        private int thick;
         private int rays;
         private int darkened;
     }
 
     /**
-     * Traces random bundles through a scene: for every bundle whose gather gives a count, every ray
-     * from the apex to a random point of the square has the same gathered transmittance as its
-     * transmittance through the tree.
+     * Traces random bundles through a scene: for every bundle, every ray from (near) the apex to
+     * (near) a random point of the square has the same gathered transmittance as its transmittance
+     * through the tree. A third of the bundles start exactly on a body's surface and are
+     * {@value #THICK} thick (their rays' ends moved by up to that much, as the renderer moves shadow
+     * rays off the surface); a quarter of the squares are wide (half-sides 3 to 15), the others
+     * 0.01 to 3.
      *
      * @param rnd     the generator
      * @param scene   the scene
@@ -1154,39 +1270,61 @@ class BoundingVolumeHierarchyTest {
         BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries());
         Query query = bvh.newQuery();
         Query treeQuery = bvh.newQuery();
+        ShadowFrustum frustum = query.getFrustum();
         List<Intersectable> bodies = scene.bodies();
         for (int bundle = 0; bundle < 60; ++bundle) {
             double choice = rnd.nextDouble();
-            Point3D apex = choice < 0.25 ? randomPoint(rnd, Point3D.ZERO, 1.5 * scene.size())
-                    : pointIn(rnd, bodies.get(rnd.nextInt(bodies.size())));
-            if (choice > 0.7)
-                apex = apex.add(randomUnit(rnd).scale(rnd.nextDouble()));
-            Point3D c = apex.add(randomUnit(rnd).scale(0.5 + 30 * rnd.nextDouble()));
-            Vector a = randomHalfSide(rnd);
-            Vector b = randomHalfSide(rnd);
-            if (a.crossProduct(b).length() < 1e-3 * a.length() * b.length()
-                    || !query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), c.getX(), c.getY(), c.getZ(),
-                    a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ()))
-                continue; // a flat pyramid: the renderer walks the tree instead
-            int found = bvh.gather(query);
-            if (found < 0) {
-                ++counts.tooMany;
-                continue;
+            double thickness = 0;
+            Point3D apex;
+            if (choice < 0.2)
+                apex = randomPoint(rnd, Point3D.ZERO, 1.5 * scene.size());
+            else if (choice < 0.55) {
+                apex = pointOn(rnd, bodies.get(rnd.nextInt(bodies.size())));
+                thickness = THICK;
+            } else {
+                apex = pointIn(rnd, bodies.get(rnd.nextInt(bodies.size())));
+                if (choice > 0.8)
+                    apex = apex.add(randomUnit(rnd).scale(rnd.nextDouble()));
             }
-            if (found == 0)
+            Point3D c = apex.add(randomUnit(rnd).scale(0.5 + 30 * rnd.nextDouble()));
+            boolean wide = rnd.nextInt(4) == 0;
+            Vector a = wide ? randomUnit(rnd).scale(3 + 12 * rnd.nextDouble()) : randomHalfSide(rnd);
+            Vector b = wide ? randomUnit(rnd).scale(3 + 12 * rnd.nextDouble()) : randomHalfSide(rnd);
+            if (a.crossProduct(b).length() < 1e-3 * a.length() * b.length()
+                    || !frustum.set(apex.getX(), apex.getY(), apex.getZ(), c.getX(), c.getY(), c.getZ(),
+                    a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), thickness))
+                continue; // a flat pyramid: the renderer walks the tree instead
+            int meeting = boxesMeeting(scene.geometries(), frustum);
+            boolean found = bvh.gather(query);
+            int bundleNumber = bundle;
+            Point3D origin = apex;
+            double thick = thickness;
+            Supplier<String> bundleLabel = () -> tc + " bundle " + bundleNumber + " (apex " + origin + ", c " + c
+                    + ", a " + a + ", b " + b + ", thickness " + thick + ", gathered " + found + ", " + meeting
+                    + " boxes meet)";
+            if (!found) {
+                // a body whose box meets the frustum is in nodes whose boxes meet it: gathered
+                assertEquals(0, meeting, () -> bundleLabel.get() + ": nothing gathered though boxes meet");
                 ++counts.none;
+            } else if (meeting > MAX_GATHERED)
+                ++counts.subtree;
             else
-                ++counts.some;
+                ++counts.few;
+            if (thickness > 0)
+                ++counts.thick;
             for (int r = 0; r < 40; ++r) {
                 Point3D target = squarePoint(rnd, c, a, b);
-                double distance = target.distance(apex);
-                Vector dir = target.subtract(apex).normalize();
-                Ray ray = new Ray(apex, dir);
-                int bundleNumber = bundle;
+                Point3D start = stray(rnd, apex, thickness);
+                Point3D end = r % 3 == 0 // moved as the renderer moves it: by the start's move
+                        ? new Point3D(target.getX() + start.getX() - apex.getX(),
+                        target.getY() + start.getY() - apex.getY(), target.getZ() + start.getZ() - apex.getZ())
+                        : stray(rnd, target, thickness);
+                double distance = start.distance(end);
+                if (distance < 1e-6)
+                    continue;
+                Ray ray = new Ray(start, end.subtract(start));
                 int rayNumber = r;
-                Point3D origin = apex;
-                Supplier<String> label = () -> tc + " bundle " + bundleNumber + " (apex " + origin + ", c " + c + ", a "
-                        + a + ", b " + b + ", gathered " + found + ") ray " + rayNumber + " " + ray + " distance "
+                Supplier<String> label = () -> bundleLabel.get() + " ray " + rayNumber + " " + ray + " distance "
                         + distance;
                 for (double minK : new double[] { MIN_K, 0 }) {
                     double expected = transmittance(bvh, ray, distance, minK, treeQuery);
@@ -1196,7 +1334,7 @@ class BoundingVolumeHierarchyTest {
                         assertEquals(expected, actual, 0, label);
                     } else
                         assertEquals(expected, actual, 1e-12, label);
-                    if (found == 0)
+                    if (!found)
                         assertEquals(1, actual, 0, () -> label.get() + ": nothing gathered, nothing may block");
                 }
                 ++counts.rays;
@@ -1207,45 +1345,65 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
+     * A dense triangle mesh: a sphere of radius 6 cut into 960 triangles, with 6 small spheres around
+     * it and a floor plane below.
+     *
+     * @param rnd the generator
+     * @return the scene
+     */
+    private static TestScene meshScene(Random rnd) {
+        List<Intersectable> bodies = new ArrayList<>(benchmark.SphereMesh.triangles(Point3D.ZERO, 6, 16, 32));
+        for (int i = 0; i < 6; ++i)
+            bodies.add(new Sphere(Point3D.ZERO.add(randomUnit(rnd).scale(8 + rnd.nextDouble())), 0.3 + rnd.nextDouble()));
+        bodies.add(new Plane(new Point3D(0, -7, 0), new Vector(0, 1, 0)));
+        return new TestScene(new Geometries(bodies.toArray(new Intersectable[0])), bodies, 8);
+    }
+
+    /**
      * Test method for {@link BoundingVolumeHierarchy#gather} and
      * {@link BoundingVolumeHierarchy#gatheredTransmittance}: on seeded random scenes, every ray of a
-     * bundle whose bodies were gathered has the transmittance the tree gives it.
+     * bundle has the transmittance the tree gives it, whether gather found nothing, a few bodies or
+     * (more than 32 of them) a subtree.
      */
     @Test
     void testGatheredTransmittanceRandomScenes() {
         // ===== Equivalence Partitions Tests =====
         // TC01: opaque random scenes (with planes, a tube, cylinders, squares, bodies that are not
-        // Geometry, nested composites): 60 bundles each from random apexes on, in, near and away from
-        // the bodies to random squares, 40 rays each: gatheredTransmittance = transmittance, 0 or 1
+        // Geometry, nested composites, a dense mesh): 60 bundles each from random apexes on (thick), in,
+        // near and away from the bodies to random narrow and wide squares, 40 rays each:
+        // gatheredTransmittance = transmittance, 0 or 1
         Random rnd = new Random(7031);
         GatherCounts opaque = new GatherCounts();
         for (int s : new int[] { 0, 2, 3, 5, 6, 7, 8, 9, 13, 15, 17, 19 })
             checkBundles(rnd, randomScene(rnd, s), true, opaque, "TC01: scene " + s);
+        for (int m = 0; m < 2; ++m)
+            checkBundles(rnd, meshScene(rnd), true, opaque, "TC01: mesh scene " + m);
         assertCounts(opaque, "TC01");
 
         // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque): equal within 1e-12
         double[] kts = { 0.5, 0.9, 0.25, 1, 0.75, 0.999, 0.5, 0.9, 0 };
         GatherCounts transparent = new GatherCounts();
-        for (int s : new int[] { 0, 2, 4, 5, 6, 8, 9, 13, 15, 18, 19 }) {
-            TestScene scene = randomScene(rnd, s);
+        for (int s : new int[] { 0, 2, 4, 5, 6, 8, 9, 13, 15, 18, 19, -1, -1 }) {
+            TestScene scene = s < 0 ? meshScene(rnd) : randomScene(rnd, s);
             for (Intersectable body : scene.bodies())
                 setKt(body, kts, rnd);
-            checkBundles(rnd, scene, false, transparent, "TC02: scene " + s);
+            checkBundles(rnd, scene, false, transparent, "TC02: " + (s < 0 ? "mesh scene" : "scene " + s));
         }
         assertCounts(transparent, "TC02");
     }
 
     /**
-     * Asserts that gather gave every kind of answer several times and that some rays were darkened,
-     * so the comparison is not vacuous.
+     * Asserts that gather gave every kind of answer often and that some rays were darkened, so the
+     * comparison is not vacuous.
      *
      * @param counts the counters
      * @param tc     the test-case label
      */
     private static void assertCounts(GatherCounts counts, String tc) {
-        assertTrue(counts.none >= 5, tc + ": too few bundles with nothing gathered (" + counts.none + ")");
-        assertTrue(counts.some >= 20, tc + ": too few bundles with bodies gathered (" + counts.some + ")");
-        assertTrue(counts.tooMany >= 5, tc + ": too few bundles with too many bodies (" + counts.tooMany + ")");
+        assertTrue(counts.none >= 30, tc + ": too few bundles with nothing gathered (" + counts.none + ")");
+        assertTrue(counts.few >= 100, tc + ": too few bundles with a few bodies gathered (" + counts.few + ")");
+        assertTrue(counts.subtree >= 50, tc + ": too few bundles meeting more than 32 boxes (" + counts.subtree + ")");
+        assertTrue(counts.thick >= 100, tc + ": too few thick bundles (" + counts.thick + ")");
         assertTrue(counts.darkened >= 500 && counts.rays - counts.darkened >= 500,
                 tc + ": too few darkened (" + counts.darkened + ") or open (" + (counts.rays - counts.darkened)
                         + ") rays of " + counts.rays);
@@ -1265,30 +1423,33 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
-     * Asserts that the rays of the last gathered bundle have the tree's transmittance.
+     * Asserts that 200 random rays of the last gathered bundle have the tree's transmittance: from the
+     * apex to a random point of the square, both ends moved by up to the thickness.
      *
-     * @param bvh   the hierarchy
-     * @param query the scratch space, as the gather left it
-     * @param apex  the apex
-     * @param c     the centre of the square
-     * @param a     half of one side
-     * @param b     half of the other side
-     * @param rnd   the generator
-     * @param tc    the test-case label
+     * @param bvh       the hierarchy
+     * @param query     the scratch space, as the gather left it
+     * @param apex      the apex
+     * @param c         the centre of the square
+     * @param a         half of one side
+     * @param b         half of the other side
+     * @param thickness how far the rays' ends may be moved
+     * @param rnd       the generator
+     * @param tc        the test-case label
      * @return how many of the rays were blocked
      */
     private static int assertBundle(BoundingVolumeHierarchy bvh, Query query, Point3D apex, Point3D c, Vector a,
-                                    Vector b, Random rnd, String tc) {
+                                    Vector b, double thickness, Random rnd, String tc) {
         Query treeQuery = bvh.newQuery();
         int blocked = 0;
         for (int r = 0; r < 200; ++r) {
-            Point3D target = squarePoint(rnd, c, a, b);
-            Ray ray = new Ray(apex, target.subtract(apex));
-            double distance = target.distance(apex);
+            Point3D start = stray(rnd, apex, thickness);
+            Point3D target = stray(rnd, squarePoint(rnd, c, a, b), thickness);
+            Ray ray = new Ray(start, target.subtract(start));
+            double distance = target.distance(start);
             double expected = transmittance(bvh, ray, distance, MIN_K, treeQuery);
             int number = r;
             assertEquals(expected, gathered(bvh, ray, distance, MIN_K, query), 0,
-                    () -> tc + ": ray " + number + " to " + target);
+                    () -> tc + ": ray " + number + " from " + start + " to " + target);
             if (expected == 0)
                 ++blocked;
         }
@@ -1296,8 +1457,28 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
+     * Asserts that the ray from one point to another has a given transmittance, both through the tree
+     * and through the bodies the last gather kept.
+     *
+     * @param expected the transmittance
+     * @param bvh      the hierarchy
+     * @param query    the scratch space, as the gather left it
+     * @param from     the ray's start
+     * @param to       the ray's end
+     * @param message  the failure message
+     */
+    private static void assertRay(double expected, BoundingVolumeHierarchy bvh, Query query, Point3D from, Point3D to,
+                                  String message) {
+        Ray ray = new Ray(from, to.subtract(from));
+        double distance = from.distance(to);
+        assertEquals(expected, transmittance(bvh, ray, distance, MIN_K, bvh.newQuery()), 0, message + " (tree)");
+        assertEquals(expected, gathered(bvh, ray, distance, MIN_K, query), 0, message + " (gathered)");
+    }
+
+    /**
      * Test method for {@link BoundingVolumeHierarchy#gather} on its boundaries: the scan, empty
-     * composites, the limit of 32 bodies, planes and bodies that are not geometries.
+     * composites, the limit of 32 bodies (a subtree kept beyond it), a dense mesh under a big light,
+     * thick bundles starting on a surface, a refused frustum, planes and bodies that are not geometries.
      */
     @Test
     void testGatherBoundaries() {
@@ -1309,85 +1490,197 @@ class BoundingVolumeHierarchyTest {
         Point3D above = new Point3D(0, 0, 1);
 
         // ===== Equivalence Partitions Tests =====
-        // TC01: one sphere in the pyramid from (0, 0, 5) down to (±1, ±1, −1): 1 body, and the rays
+        // TC01: one sphere in the pyramid from (0, 0, 5) down to (±1, ±1, −1): true, and the rays
         // through it are blocked as through the tree
         Geometries ball = new Geometries(new Sphere(new Point3D(0, 0, 2), 0.5));
         BoundingVolumeHierarchy ballBvh = BoundingVolumeHierarchy.build(ball);
         Query ballQuery = ballBvh.newQuery();
-        assertEquals(1, gather(ballBvh, ballQuery, up, below, a, b), "TC01: the sphere in the pyramid must be gathered");
-        assertTrue(assertBundle(ballBvh, ballQuery, up, below, a, b, rnd, "TC01") > 0, "TC01: some rays must be blocked");
-        // TC02: the same sphere beside the pyramid (at x = 3): nothing gathered, every ray open
+        assertTrue(gather(ballBvh, ballQuery, up, below, a, b), "TC01: the sphere in the pyramid must be gathered");
+        assertTrue(assertBundle(ballBvh, ballQuery, up, below, a, b, 0, rnd, "TC01") > 0,
+                "TC01: some rays must be blocked");
+        // TC02: the same sphere beside the pyramid (at x = 3): false, every ray open
         Geometries aside = new Geometries(new Sphere(new Point3D(3, 0, 2), 0.5));
         BoundingVolumeHierarchy asideBvh = BoundingVolumeHierarchy.build(aside);
         Query asideQuery = asideBvh.newQuery();
-        assertEquals(0, gather(asideBvh, asideQuery, up, below, a, b), "TC02: a sphere beside the pyramid must not be gathered");
-        assertEquals(0, assertBundle(asideBvh, asideQuery, up, below, a, b, rnd, "TC02"), "TC02: no ray may be blocked");
-        // TC03: the 40 triangles of a row under a pyramid covering many of them: -1
+        assertFalse(gather(asideBvh, asideQuery, up, below, a, b), "TC02: a sphere beside the pyramid must not be gathered");
+        assertEquals(0, assertBundle(asideBvh, asideQuery, up, below, a, b, 0, rnd, "TC02"), "TC02: no ray may be blocked");
+        // TC03: the 40 triangles of a row under a pyramid covering all of them: true (a subtree is kept),
+        // and the rays agree with the tree, through each triangle blocked, between them open
         BoundingVolumeHierarchy rowBvh = BoundingVolumeHierarchy.build(triangleRow());
         Query rowQuery = rowBvh.newQuery();
-        assertEquals(-1, gather(rowBvh, rowQuery, new Point3D(20, 0, 10), new Point3D(20, 0, -10),
-                new Vector(50, 0, 0), new Vector(0, 1, 0)), "TC03: a pyramid over 40 triangles must give -1");
-        // TC04: a body that is not a Geometry is always gathered, even far from the pyramid: 1
+        Point3D apexRow = new Point3D(20, 0, 10);
+        Point3D cRow = new Point3D(20, 0, -10);
+        Vector aRow = new Vector(50, 0, 0);
+        assertTrue(gather(rowBvh, rowQuery, apexRow, cRow, aRow, b), "TC03: a pyramid over 40 triangles must give true");
+        assertBundle(rowBvh, rowQuery, apexRow, cRow, aRow, b, 0, rnd, "TC03");
+        for (int i = 0; i < 40; ++i) {
+            assertRay(0, rowBvh, rowQuery, apexRow, new Point3D(2 * i - 20, 0, -10), "TC03: through triangle " + i);
+            assertRay(1, rowBvh, rowQuery, apexRow, new Point3D(2 * i - 19, 0, -10), "TC03: past triangle " + i);
+        }
+        // TC04: a body that is not a Geometry is always gathered, even far from the pyramid: true
         Geometries wrapped = new Geometries(new Wrapper(new Sphere(new Point3D(50, 50, 50), 1)));
         BoundingVolumeHierarchy wrappedBvh = BoundingVolumeHierarchy.build(wrapped);
-        assertEquals(1, gather(wrappedBvh, wrappedBvh.newQuery(), up, below, a, b),
+        assertTrue(gather(wrappedBvh, wrappedBvh.newQuery(), up, below, a, b),
                 "TC04: a body that is not a Geometry must be gathered");
+        // TC05: a dense mesh (a sphere of radius 5 in 2208 triangles) and a big light square (edge 40) at
+        // y = 12 above it, seen from the centre of a triangle at the equator with thickness 0.1, as the
+        // renderer sees a point near the terminator: hundreds of boxes meet the pyramid, true, and the
+        // rays (into the mesh blocked, away from it open) agree with the tree
+        List<Triangle> mesh = benchmark.SphereMesh.triangles(Point3D.ZERO, 5, 24, 48);
+        BoundingVolumeHierarchy meshBvh = BoundingVolumeHierarchy.build(new Geometries(mesh.toArray(new Intersectable[0])));
+        Query meshQuery = meshBvh.newQuery();
+        Point3D equator = new Point3D(5, 0, 0);
+        Triangle nearest = mesh.get(0);
+        for (Triangle triangle : mesh)
+            if (centroid(triangle).distance(equator) < centroid(nearest).distance(equator))
+                nearest = triangle;
+        Point3D onMesh = centroid(nearest);
+        Point3D light = new Point3D(0, 12, 0);
+        Vector aLight = new Vector(20, 0, 0);
+        Vector bLight = new Vector(0, 0, 20);
+        assertTrue(gather(meshBvh, meshQuery, onMesh, light, aLight, bLight, THICK), "TC05: the mesh must be gathered");
+        int meeting = boxesMeeting(new Geometries(mesh.toArray(new Intersectable[0])), meshQuery.getFrustum());
+        assertTrue(meeting > 10 * MAX_GATHERED, "TC05: the pyramid must meet hundreds of boxes, met " + meeting);
+        int blockedOnMesh = assertBundle(meshBvh, meshQuery, onMesh, light, aLight, bLight, THICK, rnd, "TC05");
+        assertTrue(blockedOnMesh > 20 && blockedOnMesh < 180,
+                "TC05: rays into the mesh must be blocked, the others open: " + blockedOnMesh + " of 200 blocked");
+        // TC06: a thick bundle (0.1) from the centre (5, 0, 0) of triangle 5 of the row, to a square
+        // across the row's plane (z from −0.5 to 2.5): true (the triangle holds the apex), and rays that
+        // start below it or end below the plane through it are blocked
+        Point3D onRow = new Point3D(5, 0, 0);
+        Point3D cAcross = new Point3D(5, 0, 1);
+        Vector bAcross = new Vector(0, 0.3, 1.5);
+        assertTrue(gather(rowBvh, rowQuery, onRow, cAcross, a, bAcross, THICK), "TC06: the triangle under the apex");
+        int blockedOnRow = assertBundle(rowBvh, rowQuery, onRow, cAcross, a, bAcross, THICK, rnd, "TC06");
+        assertTrue(blockedOnRow > 0 && blockedOnRow < 200, "TC06: some rays blocked, some open: " + blockedOnRow);
+        // the ray from the apex to the square's centre (5, 0, 1), moved 0.1 down: blocked; moved 0.1 up: open
+        assertRay(0, rowBvh, rowQuery, new Point3D(5, 0, -0.1), new Point3D(5, 0, 0.9), "TC06: from below the triangle");
+        assertRay(1, rowBvh, rowQuery, new Point3D(5, 0, 0.1), new Point3D(5, 0, 1.1), "TC06: from above the triangle");
 
         // ===== Boundary Values Tests =====
-        // TC11: the scan always gives -1: for a scene, an empty composite and a pyramid meeting nothing
-        Query scanQuery;
-        for (Geometries scene : List.of(ball, aside, new Geometries(), triangleRow())) {
+        // TC11: the scan with bodies (a plane among them) gives true, even for a pyramid meeting nothing,
+        // and its rays agree with its transmittance; an empty scan (also of empty composites) gives false
+        for (Geometries scene : List.of(ball, aside, triangleRow(), new Geometries(new Plane(Point3D.ZERO,
+                new Vector(0, 0, 1))))) {
             BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(scene);
-            scanQuery = scan.newQuery();
-            assertEquals(-1, gather(scan, scanQuery, up, below, a, b), "TC11: the scan must give -1");
-            assertEquals(-1, gather(scan, scanQuery, new Point3D(100, 100, 100), new Point3D(100, 100, 110), a, b),
-                    "TC11: the scan must give -1 even where nothing is");
+            Query scanQuery = scan.newQuery();
+            assertTrue(gather(scan, scanQuery, up, below, a, b), "TC11: the scan of bodies must give true");
+            assertBundle(scan, scanQuery, up, below, a, b, 0, rnd, "TC11");
+            assertTrue(gather(scan, scanQuery, new Point3D(100, 100, 100), new Point3D(100, 100, 110), a, b),
+                    "TC11: the scan of bodies must give true even where nothing is");
         }
-        // TC12: an empty composite (also one of empty composites): 0, and every ray is open
+        for (Geometries empty : List.of(new Geometries(), new Geometries(new Geometries(), new Geometries(new Geometries())))) {
+            BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(empty);
+            Query scanQuery = scan.newQuery();
+            assertFalse(gather(scan, scanQuery, up, below, a, b), "TC11: an empty scan must give false");
+            assertEquals(1, gathered(scan, new Ray(up, new Vector(0, 0, -1)), 6, MIN_K, scanQuery), 0,
+                    "TC11: nothing may block in an empty scan");
+        }
+        // TC12: an empty composite (also one of empty composites): false, and every ray is open
         for (Geometries empty : List.of(new Geometries(), new Geometries(new Geometries(), new Geometries(new Geometries())))) {
             BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(empty);
             Query query = bvh.newQuery();
-            assertEquals(0, gather(bvh, query, up, below, a, b), "TC12: an empty composite gathers nothing");
+            assertFalse(gather(bvh, query, up, below, a, b), "TC12: an empty composite gathers nothing");
             assertEquals(1, gathered(bvh, new Ray(up, new Vector(0, 0, -1)), 6, MIN_K, query), 0, "TC12: nothing may block");
         }
-        // TC13: a pyramid whose section at z = 0 is x ∈ [−0.5, 31.5]: exactly 32 triangles, gathered,
-        // and the rays agree with the tree
+        // TC13: a pyramid whose section at z = 0 is x ∈ [−0.5, 31.5]: exactly 32 triangles, true, and
+        // the rays through each of them blocked (random rays of the row's bundles seldom meet a triangle:
+        // they are compared with the tree, the rays through the triangles are aimed)
         Point3D apex32 = new Point3D(15.5, 0, 10);
         Point3D c32 = new Point3D(15.5, 0, -10);
         Vector a32 = new Vector(32, 0, 0);
-        assertEquals(32, gather(rowBvh, rowQuery, apex32, c32, a32, b), "TC13: 32 triangles must be gathered");
-        assertTrue(assertBundle(rowBvh, rowQuery, apex32, c32, a32, b, rnd, "TC13") > 0, "TC13: some rays must be blocked");
-        // TC14: its section widened to x ∈ [−0.5, 32.5]: 33 triangles, -1
-        assertEquals(-1, gather(rowBvh, rowQuery, new Point3D(16, 0, 10), new Point3D(16, 0, -10), new Vector(33, 0, 0), b),
-                "TC14: 33 triangles are more than 32");
-        // TC15: the same query gathers again after -1: a pyramid over the triangles 0..3 only (x ∈ [−0.5, 3.5]): 4
+        assertTrue(gather(rowBvh, rowQuery, apex32, c32, a32, b), "TC13: 32 triangles must be gathered");
+        assertEquals(32, boxesMeeting(triangleRow(), rowQuery.getFrustum()), "TC13: 32 boxes must meet the pyramid");
+        assertBundle(rowBvh, rowQuery, apex32, c32, a32, b, 0, rnd, "TC13");
+        for (int i = 0; i < 32; ++i)
+            assertRay(0, rowBvh, rowQuery, apex32, new Point3D(2 * i - 15.5, 0, -10), "TC13: through triangle " + i);
+        // TC14: its section widened to x ∈ [−0.5, 32.5]: 33 triangles, more than 32: true, and the ray
+        // through each of the 33 is blocked, the rays between them open
+        Point3D apex33 = new Point3D(16, 0, 10);
+        Point3D c33 = new Point3D(16, 0, -10);
+        Vector a33 = new Vector(33, 0, 0);
+        assertTrue(gather(rowBvh, rowQuery, apex33, c33, a33, b), "TC14: 33 triangles must give true");
+        assertEquals(33, boxesMeeting(triangleRow(), rowQuery.getFrustum()), "TC14: 33 boxes must meet the pyramid");
+        for (int i = 0; i < 33; ++i) {
+            assertRay(0, rowBvh, rowQuery, apex33, new Point3D(2 * i - 16, 0, -10), "TC14: through triangle " + i);
+            assertRay(1, rowBvh, rowQuery, apex33, new Point3D(2 * i - 15, 0, -10), "TC14: past triangle " + i);
+        }
+        assertBundle(rowBvh, rowQuery, apex33, c33, a33, b, 0, rnd, "TC14");
+        // TC15: the same query gathers again after a subtree: a pyramid over the triangles 0..3 only
+        // (x ∈ [−0.5, 3.5]): true, the rays agree and those through the 4 are blocked; then one beside the
+        // row: false
         Point3D apex4 = new Point3D(1.5, 0, 10);
         Point3D c4 = new Point3D(1.5, 0, -10);
         Vector a4 = new Vector(4, 0, 0);
-        assertEquals(4, gather(rowBvh, rowQuery, apex4, c4, a4, b), "TC15: 4 triangles must be gathered");
-        assertTrue(assertBundle(rowBvh, rowQuery, apex4, c4, a4, b, rnd, "TC15") > 0, "TC15: some rays must be blocked");
+        assertTrue(gather(rowBvh, rowQuery, apex4, c4, a4, b), "TC15: 4 triangles must be gathered");
+        assertBundle(rowBvh, rowQuery, apex4, c4, a4, b, 0, rnd, "TC15");
+        for (int i = 0; i < 4; ++i)
+            assertRay(0, rowBvh, rowQuery, apex4, new Point3D(2 * i - 1.5, 0, -10), "TC15: through triangle " + i);
+        assertTrue(gather(rowBvh, rowQuery, apex33, c33, a33, b), "TC15: 33 triangles again");
+        assertFalse(gather(rowBvh, rowQuery, new Point3D(20, 5, 10), new Point3D(20, 5, -10), a, b),
+                "TC15: a pyramid beside the row after a subtree must give false");
+        assertEquals(0, assertBundle(rowBvh, rowQuery, new Point3D(20, 5, 10), new Point3D(20, 5, -10), a, b, 0, rnd,
+                "TC15"), "TC15: no ray beside the row may be blocked");
 
-        // TC16: a plane z = 0 alone: the pyramid from (0, 0, 5) to z = 1 does not meet it (0, every ray
-        // open); to z = −1 it crosses it (1, every ray blocked)
+        // TC16: a plane z = 0 alone: the pyramid from (0, 0, 5) to z = 1 does not meet it (false, every
+        // ray open); to z = −1 it crosses it (true, every ray blocked)
         Geometries floor = new Geometries(new Plane(Point3D.ZERO, new Vector(0, 0, 1)));
         BoundingVolumeHierarchy floorBvh = BoundingVolumeHierarchy.build(floor);
         Query floorQuery = floorBvh.newQuery();
-        assertEquals(0, gather(floorBvh, floorQuery, up, above, a, b), "TC16: a plane the pyramid does not reach");
-        assertEquals(0, assertBundle(floorBvh, floorQuery, up, above, a, b, rnd, "TC16"), "TC16: no ray may be blocked");
-        assertEquals(1, gather(floorBvh, floorQuery, up, below, a, b), "TC16: a plane the pyramid crosses");
-        assertEquals(200, assertBundle(floorBvh, floorQuery, up, below, a, b, rnd, "TC16"), "TC16: every ray must be blocked");
-        // TC17: the pyramid's base on the plane (z = 0): gathered (1), every ray ends on it and is blocked
-        assertEquals(1, gather(floorBvh, floorQuery, up, Point3D.ZERO, a, b), "TC17: a plane touching the base");
-        assertEquals(200, assertBundle(floorBvh, floorQuery, up, Point3D.ZERO, a, b, rnd, "TC17"),
+        assertFalse(gather(floorBvh, floorQuery, up, above, a, b), "TC16: a plane the pyramid does not reach");
+        assertEquals(0, assertBundle(floorBvh, floorQuery, up, above, a, b, 0, rnd, "TC16"), "TC16: no ray may be blocked");
+        assertTrue(gather(floorBvh, floorQuery, up, below, a, b), "TC16: a plane the pyramid crosses");
+        assertEquals(200, assertBundle(floorBvh, floorQuery, up, below, a, b, 0, rnd, "TC16"),
+                "TC16: every ray must be blocked");
+        // TC17: the pyramid's base on the plane (z = 0): true, every ray ends on it and is blocked
+        assertTrue(gather(floorBvh, floorQuery, up, Point3D.ZERO, a, b), "TC17: a plane touching the base");
+        assertEquals(200, assertBundle(floorBvh, floorQuery, up, Point3D.ZERO, a, b, 0, rnd, "TC17"),
                 "TC17: a hit at the ray's end blocks it");
-        // TC18: the plane behind the apex (the pyramid from (0, 0, 5) up to z = 10): 0
-        assertEquals(0, gather(floorBvh, floorQuery, up, new Point3D(0, 0, 10), a, b), "TC18: a plane behind the apex");
-        // TC19: two planes, the pyramid crossing only z = 0: 1, and the rays blocked by it
+        // TC18: the plane behind the apex (the pyramid from (0, 0, 5) up to z = 10): false
+        assertFalse(gather(floorBvh, floorQuery, up, new Point3D(0, 0, 10), a, b), "TC18: a plane behind the apex");
+        // TC19: two planes, the pyramid crossing only z = 0: true, and the rays blocked by it
         Geometries two = new Geometries(new Plane(Point3D.ZERO, new Vector(0, 0, 1)),
                 new Plane(new Point3D(0, 0, 20), new Vector(0, 0, 1)));
         BoundingVolumeHierarchy twoBvh = BoundingVolumeHierarchy.build(two);
         Query twoQuery = twoBvh.newQuery();
-        assertEquals(1, gather(twoBvh, twoQuery, up, below, a, b), "TC19: only the crossed plane must be gathered");
-        assertEquals(200, assertBundle(twoBvh, twoQuery, up, below, a, b, rnd, "TC19"), "TC19: every ray must be blocked");
+        assertTrue(gather(twoBvh, twoQuery, up, below, a, b), "TC19: only the crossed plane must be gathered");
+        assertEquals(200, assertBundle(twoBvh, twoQuery, up, below, a, b, 0, rnd, "TC19"), "TC19: every ray must be blocked");
+        // TC20: the plane z = −0.05 just below an apex (0, 0, 0) whose pyramid goes up to z = 5: set aside
+        // by a thin pyramid (false), kept by one 0.1 thick (true), whose rays starting below it are blocked
+        Geometries low = new Geometries(new Plane(new Point3D(0, 0, -0.05), new Vector(0, 0, 1)));
+        BoundingVolumeHierarchy lowBvh = BoundingVolumeHierarchy.build(low);
+        Query lowQuery = lowBvh.newQuery();
+        Point3D top = new Point3D(0, 0, 5);
+        assertFalse(gather(lowBvh, lowQuery, Point3D.ZERO, top, a, b), "TC20: the plane 0.05 behind a thin pyramid");
+        assertTrue(gather(lowBvh, lowQuery, Point3D.ZERO, top, a, b, THICK), "TC20: the plane 0.05 behind a thick pyramid");
+        int blockedLow = assertBundle(lowBvh, lowQuery, Point3D.ZERO, top, a, b, THICK, rnd, "TC20");
+        assertTrue(blockedLow > 0 && blockedLow < 200, "TC20: rays from below blocked, from above open: " + blockedLow);
+        // TC21: a refused (flat) frustum sets nothing aside: gather gives true over the row (a subtree), and
+        // rays through each triangle are blocked, between them open
+        assertFalse(rowQuery.getFrustum().set(5, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0), "TC21: a flat pyramid is refused");
+        assertTrue(rowBvh.gather(rowQuery), "TC21: after a refused set everything must be gathered");
+        for (int i = 0; i < 40; ++i) {
+            assertRay(0, rowBvh, rowQuery, new Point3D(i, 0, 5), new Point3D(i, 0, -5), "TC21: through triangle " + i);
+            assertRay(1, rowBvh, rowQuery, new Point3D(i + 0.5, 0, 5), new Point3D(i + 0.5, 0, -5),
+                    "TC21: past triangle " + i);
+        }
+        // TC22: a refused frustum over the ball (one body, kept one by one): true, the ray through it blocked
+        assertFalse(ballQuery.getFrustum().set(0, 0, 7, 0, 0, 7, 1, 0, 0, 0, 1, 0, 0), "TC22: a flat pyramid is refused");
+        assertTrue(ballBvh.gather(ballQuery), "TC22: after a refused set the ball must be gathered");
+        assertRay(0, ballBvh, ballQuery, up, below, "TC22: the ray through the ball");
+        assertRay(1, ballBvh, ballQuery, new Point3D(3, 0, 5), new Point3D(3, 0, -1), "TC22: a ray past the ball");
+    }
+
+    /**
+     * The centroid of a triangle, a point on it.
+     *
+     * @param triangle the triangle
+     * @return the centroid
+     */
+    private static Point3D centroid(Triangle triangle) {
+        List<Point3D> v = triangle.getVertices();
+        return new Point3D((v.get(0).getX() + v.get(1).getX() + v.get(2).getX()) / 3,
+                (v.get(0).getY() + v.get(1).getY() + v.get(2).getY()) / 3,
+                (v.get(0).getZ() + v.get(1).getZ() + v.get(2).getZ()) / 3);
     }
 }

@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
@@ -16,20 +17,31 @@ import org.junit.jupiter.api.Test;
  * Most cases use the pyramid with apex (0, 0, 0) and base (±2, ±2, 10) (centre (0, 0, 10), a = (2, 0, 0),
  * b = (0, 2, 0)): its sides are the planes x = ±z/5 and y = ±z/5, its base the plane z = 10. Its size
  * (largest |coordinate| 10 plus the extents 4 + 4 + 10 of its bounding box) is 28, so its margin is
- * 28·1e-7 = 2.8e-6.
+ * 28·1e-7 = 2.8e-6. A thickness t (rays that start up to t from the apex and end up to t from the
+ * base) widens that margin to t + 2.8e-6.
  */
 class ShadowFrustumTest {
     /** The margin of the standard pyramid: 1e-7 of its size 28. */
     private static final double MARGIN = 2.8e-6;
 
     /**
-     * The standard pyramid: apex (0, 0, 0), base (±2, ±2, 10).
+     * The standard pyramid: apex (0, 0, 0), base (±2, ±2, 10), no thickness.
      *
      * @return the frustum
      */
     private static ShadowFrustum standard() {
+        return standard(0);
+    }
+
+    /**
+     * The standard pyramid: apex (0, 0, 0), base (±2, ±2, 10), with a thickness.
+     *
+     * @param thickness how far the rays may stray from the pyramid
+     * @return the frustum
+     */
+    private static ShadowFrustum standard(double thickness) {
         ShadowFrustum frustum = new ShadowFrustum();
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0), "the standard pyramid must be set");
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, thickness), "the standard pyramid must be set");
         return frustum;
     }
 
@@ -55,33 +67,50 @@ class ShadowFrustumTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: apex off the base's plane, a and b independent: true
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0), "TC01: a proper pyramid must be set");
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC01: a proper pyramid must be set");
         // TC02: a slanted base (a, b not orthogonal, not along the axes) seen from aside: true
-        assertTrue(frustum.set(1, -2, 3, 7, 5, -4, 1, 2, 0.5, -0.5, 1, 3), "TC02: a slanted pyramid must be set");
+        assertTrue(frustum.set(1, -2, 3, 7, 5, -4, 1, 2, 0.5, -0.5, 1, 3, 0), "TC02: a slanted pyramid must be set");
         // TC03: the apex in the base's plane (here its centre): false
-        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0), "TC03: apex at the base's centre is flat");
+        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC03: apex at the base's centre is flat");
         // TC04: the apex in the base's plane, outside the base: false
-        assertFalse(frustum.set(5, 7, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0), "TC04: apex in the base's plane is flat");
+        assertFalse(frustum.set(5, 7, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC04: apex in the base's plane is flat");
         // TC05: after a flat pyramid the same instance is set again properly: true, and it works
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0), "TC05: a flat pyramid must not spoil the next set");
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC05: a flat pyramid must not spoil the next set");
         assertTrue(meets(frustum, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC05: the reset pyramid must meet a box inside it");
         assertFalse(meets(frustum, -0.5, -0.5, -2, 0.5, 0.5, -1), "TC05: the reset pyramid must reject a box behind it");
+        // TC06: a proper pyramid with a thickness 0.1 (the renderer's thick bundles): true
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC06: a thick pyramid must be set");
+        // TC07: the apex in the base's plane with a thickness 0.1: still flat, false
+        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC07: a thick flat pyramid is flat");
 
         // ===== Boundary Values Tests =====
         // TC11: a = 0 (the base is a segment): false
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 2, 0), "TC11: a = 0 is a degenerate base");
+        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 2, 0, 0), "TC11: a = 0 is a degenerate base");
         // TC12: b = 0: false
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 0, 0), "TC12: b = 0 is a degenerate base");
+        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 0, 0, 0), "TC12: b = 0 is a degenerate base");
         // TC13: a parallel to b: false
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, -3, 0, 0), "TC13: a parallel to b is a degenerate base");
+        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, -3, 0, 0, 0), "TC13: a parallel to b is a degenerate base");
         // TC14: a and b both 0 (the base is a point): false
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0), "TC14: a point base is degenerate");
+        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0), "TC14: a point base is degenerate");
         // TC15: the apex just off the base's plane (1e-3 of a size of 28, far above the flatness 2.8e-8): true
-        assertTrue(frustum.set(0, 0, 10 - 1e-3, 0, 0, 10, 2, 0, 0, 0, 2, 0), "TC15: a very low pyramid is not flat");
+        assertTrue(frustum.set(0, 0, 10 - 1e-3, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC15: a very low pyramid is not flat");
         // TC16: the apex off the plane by 1e-12 (below the flatness): false
-        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0), "TC16: a pyramid this low counts as flat");
+        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC16: a pyramid this low counts as flat");
         // TC17: a tiny light (edge 2e-3) far away (distance 50): a thin pyramid, still true
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 50, 1e-3, 0, 0, 0, 1e-3, 0), "TC17: a thin pyramid must be set");
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 50, 1e-3, 0, 0, 0, 1e-3, 0, 0), "TC17: a thin pyramid must be set");
+        // TC18: a thickness far larger than the pyramid (10 around a pyramid of size 28): true
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 10), "TC18: a very thick pyramid must be set");
+        // TC19: a thickness that does not lift the flatness: the pyramid 1e-12 low is flat even 1 thick
+        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 1),
+                "TC19: a thickness must not make a flat pyramid proper");
+        // TC20: a negative thickness is rejected with a message naming the thickness
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, -1e-9), "TC20: a negative thickness must throw");
+        assertTrue(e.getMessage().contains("thickness"), "TC20: the message must name the thickness: " + e.getMessage());
+        // TC21: a thickness that is not a number is rejected too
+        e = assertThrows(IllegalArgumentException.class,
+                () -> frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, Double.NaN), "TC21: a NaN thickness must throw");
+        assertTrue(e.getMessage().contains("thickness"), "TC21: the message must name the thickness: " + e.getMessage());
     }
 
     /** Test method for {@link ShadowFrustum#meetsBox(double[], int)}. */
@@ -175,39 +204,192 @@ class ShadowFrustumTest {
     }
 
     /**
-     * A random point of a pyramid: apex + t·(a base point − apex), the base point c + s·a + r·b with s,
-     * r in [−1, 1]; some of them on the base's edges, corners and on the sides (t = 1, s or r = ±1).
+     * Test method for {@link ShadowFrustum#meetsBox(double[], int)} and {@link ShadowFrustum#meetsPlane}
+     * of a thick pyramid: the standard pyramid 0.5 thick keeps what lies outside it by less than 0.5
+     * (plus the margin 2.8e-6) and sets aside what lies clearly farther.
+     */
+    @Test
+    void testThickness() {
+        ShadowFrustum thick = standard(0.5);
+        ShadowFrustum thin = standard();
+        double len = Math.sqrt(1.04);
+        double s = Math.sqrt(0.5);
+
+        // ===== Equivalence Partitions Tests =====
+        // Boxes. The side x = z/5: a box x from 1 + ε to 2, z 0..5 is ε/√1.04 outside it.
+        // TC01: outside the side by 0.392 (ε = 0.4): kept by the thick pyramid, set aside by the thin one
+        assertTrue(meets(thick, 1.4, -0.1, 0, 2, 0.1, 5), "TC01: a box 0.392 outside a side is within the thickness");
+        assertFalse(meets(thin, 1.4, -0.1, 0, 2, 0.1, 5), "TC01: without thickness the box is outside");
+        // TC02: outside the side by 0.588 (ε = 0.6): set aside
+        assertFalse(meets(thick, 1.6, -0.1, 0, 2, 0.1, 5), "TC02: a box 0.588 outside a side is beyond the thickness");
+        // TC03: behind the apex by 0.4 (z −1..−0.4): kept; by 0.6 (z −1..−0.6): set aside
+        assertTrue(meets(thick, -1, -1, -1, 1, 1, -0.4), "TC03: a box 0.4 behind the apex is within the thickness");
+        assertFalse(meets(thick, -1, -1, -1, 1, 1, -0.6), "TC03: a box 0.6 behind the apex is beyond the thickness");
+        // TC04: beyond the base by 0.4 (z 10.4..11): kept; by 0.6 (z 10.6..11): set aside
+        assertTrue(meets(thick, -1, -1, 10.4, 1, 1, 11), "TC04: a box 0.4 beyond the base is within the thickness");
+        assertFalse(meets(thick, -1, -1, 10.6, 1, 1, 11), "TC04: a box 0.6 beyond the base is beyond the thickness");
+        // TC05: beside the bounding box (x from 2.4, z 9.5..10, 0.392 off the side x = z/5): kept; from
+        // x 2.6 (0.588 off the side, 0.6 off the bounding box): set aside
+        assertTrue(meets(thick, 2.4, -0.1, 9.5, 3, 0.1, 10), "TC05: a box 0.392 beside the base is within the thickness");
+        assertFalse(meets(thick, 2.6, -0.1, 9.5, 3, 0.1, 10), "TC05: a box 0.588 beside the base is beyond the thickness");
+        // TC06: a box inside the pyramid stays met: true
+        assertTrue(meets(thick, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC06: a box inside the thick pyramid must be met");
+        // Planes.
+        // TC07: the plane z = −0.4 (either normal): kept; z = −0.6: set aside
+        assertTrue(thick.meetsPlane(0, 0, 1, 0, 0, -0.4), "TC07: a plane 0.4 behind the apex is within the thickness");
+        assertTrue(thick.meetsPlane(0, 0, -1, 0, 0, -0.4), "TC07: the flipped plane 0.4 behind the apex too");
+        assertFalse(thin.meetsPlane(0, 0, 1, 0, 0, -0.4), "TC07: without thickness the plane is outside");
+        assertFalse(thick.meetsPlane(0, 0, 1, 0, 0, -0.6), "TC07: a plane 0.6 behind the apex is beyond the thickness");
+        assertFalse(thick.meetsPlane(0, 0, -1, 0, 0, -0.6), "TC07: the flipped plane 0.6 behind the apex too");
+        // TC08: the plane z = 10.4 beyond the base: kept; z = 10.6: set aside
+        assertTrue(thick.meetsPlane(0, 0, 1, 0, 0, 10.4), "TC08: a plane 0.4 beyond the base is within the thickness");
+        assertFalse(thick.meetsPlane(0, 0, 1, 0, 0, 10.6), "TC08: a plane 0.6 beyond the base is beyond the thickness");
+        // TC09: the plane x = 2.4 beside the base: kept; x = 2.6: set aside
+        assertTrue(thick.meetsPlane(1, 0, 0, 2.4, 0, 0), "TC09: a plane 0.4 beside the base is within the thickness");
+        assertFalse(thick.meetsPlane(1, 0, 0, 2.6, 0, 0), "TC09: a plane 0.6 beside the base is beyond the thickness");
+        // TC10: the plane x + y = 4 + 0.4·√2, 0.4 past the corner (2, 2, 10): kept; 0.6 past it: set aside
+        assertTrue(thick.meetsPlane(s, s, 0, 2 + 0.4 * s, 2 + 0.4 * s, 0), "TC10: a plane 0.4 past a corner is kept");
+        assertFalse(thick.meetsPlane(s, s, 0, 2 + 0.6 * s, 2 + 0.6 * s, 0), "TC10: a plane 0.6 past a corner is set aside");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a box behind the apex by exactly the thickness 0.5: kept; by 0.5 + 1e-6 (within the margin
+        // 2.8e-6): kept; by 0.5 + 1e-4: set aside
+        assertTrue(meets(thick, -1, -1, -1, 1, 1, -0.5), "TC11: a box the thickness behind the apex must be kept");
+        assertTrue(meets(thick, -1, -1, -1, 1, 1, -0.5 - 1e-6), "TC11: a box within thickness + margin must be kept");
+        assertFalse(meets(thick, -1, -1, -1, 1, 1, -0.5 - 1e-4), "TC11: a box beyond thickness + margin must be set aside");
+        // TC12: a box outside the side x = z/5 by 0.5 + 1e-6: kept; by 0.5 + 1e-4: set aside
+        assertTrue(meets(thick, 1 + (0.5 + 1e-6) * len, -0.1, 0, 2, 0.1, 5), "TC12: within thickness + margin of a side");
+        assertFalse(meets(thick, 1 + (0.5 + 1e-4) * len, -0.1, 0, 2, 0.1, 5), "TC12: beyond thickness + margin of a side");
+        // TC13: the plane z = −0.5 − 1e-6: kept; z = −0.5 − 1e-4: set aside
+        assertTrue(thick.meetsPlane(0, 0, 1, 0, 0, -0.5 - 1e-6), "TC13: a plane within thickness + margin must be kept");
+        assertFalse(thick.meetsPlane(0, 0, 1, 0, 0, -0.5 - 1e-4), "TC13: a plane beyond thickness + margin must be set aside");
+        // TC14: the same instance set again with thickness 0: the box and plane of TC01/TC07 are set aside again
+        assertTrue(thick.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC14: the thin pyramid must be set");
+        assertFalse(meets(thick, 1.4, -0.1, 0, 2, 0.1, 5), "TC14: the thickness must not outlive its set");
+        assertFalse(thick.meetsPlane(0, 0, 1, 0, 0, -0.4), "TC14: the thickness must not outlive its set");
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#meetsBox(double[], int)} and {@link ShadowFrustum#meetsPlane}
+     * after a refused {@link ShadowFrustum#set} (a flat pyramid), or before any set: nothing is set aside.
+     */
+    @Test
+    void testRefusedSet() {
+        // a box and a plane far from any pyramid used here, and a box and a plane the standard pyramid rejects
+        double[] far = { 1000, 1000, 1000, 1001, 1001, 1001 };
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a new instance, never set: every box and plane is met
+        ShadowFrustum fresh = new ShadowFrustum();
+        assertTrue(meets(fresh, far), "TC01: an unset frustum must set no box aside");
+        assertTrue(fresh.meetsPlane(1, 0, 0, 1000, 0, 0), "TC01: an unset frustum must set no plane aside");
+        // TC02: a new instance whose first set is refused (apex at the base's centre): everything met
+        assertFalse(fresh.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC02: the flat pyramid must be refused");
+        assertTrue(meets(fresh, far), "TC02: a refused frustum must set no box aside");
+        assertTrue(meets(fresh, -1, -1, -2, 1, 1, -1), "TC02: a refused frustum must set no box aside");
+        assertTrue(fresh.meetsPlane(1, 0, 0, 1000, 0, 0), "TC02: a refused frustum must set no plane aside");
+        assertTrue(fresh.meetsPlane(0, 0, 1, 0, 0, -1), "TC02: a refused frustum must set no plane aside");
+        // TC03: a proper set rejects the box behind the apex and the plane z = −1; a refused set after it
+        // (apex in the base's plane, outside the base) keeps them, and every far box and plane
+        ShadowFrustum frustum = standard();
+        assertFalse(meets(frustum, -1, -1, -2, 1, 1, -1), "TC03: the proper pyramid rejects the box behind it");
+        assertFalse(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC03: the proper pyramid rejects the plane behind it");
+        assertFalse(frustum.set(5, 7, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC03: the flat pyramid must be refused");
+        assertTrue(meets(frustum, -1, -1, -2, 1, 1, -1), "TC03: after a refused set the box must be met");
+        assertTrue(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC03: after a refused set the plane must be met");
+        assertTrue(meets(frustum, far), "TC03: after a refused set a far box must be met");
+        assertTrue(frustum.meetsPlane(0, 0, -1, 0, 0, 1000), "TC03: after a refused set a far plane must be met");
+
+        // ===== Boundary Values Tests =====
+        // TC11: refused for a degenerate base (a = 0) after a proper thick set: everything met
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC11: the proper pyramid must be set");
+        assertFalse(meets(frustum, far), "TC11: the proper pyramid rejects the far box");
+        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 2, 0, 0.1), "TC11: a = 0 must be refused");
+        assertTrue(meets(frustum, far), "TC11: after a refused set the far box must be met");
+        assertTrue(frustum.meetsPlane(1, 0, 0, 1000, 0, 0), "TC11: after a refused set the far plane must be met");
+        // TC12: refused for a pyramid just too low (1e-12): everything met
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC12: the proper pyramid must be set");
+        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC12: the low pyramid must be refused");
+        assertTrue(meets(frustum, far), "TC12: after a refused set the far box must be met");
+        assertTrue(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC12: after a refused set the plane behind must be met");
+        // TC13: a proper set after the refused one sets boxes and planes aside again
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC13: the proper pyramid must be set");
+        assertFalse(meets(frustum, far), "TC13: the proper pyramid must reject the far box again");
+        assertFalse(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC13: the proper pyramid must reject the plane again");
+        assertTrue(meets(frustum, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC13: the proper pyramid must meet a box inside it");
+    }
+
+    /**
+     * A random parameter in [−1, 1], a quarter of the time exactly ±1.
+     *
+     * @param rnd the generator
+     * @return the parameter
+     */
+    private static double edgeOrInner(Random rnd) {
+        return rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
+    }
+
+    /**
+     * A random base point of a pyramid: c + s·a + r·b, some of them on the base's edges and corners.
      *
      * @param rnd the generator
      * @param p   the pyramid {apex, c, a, b}, 12 doubles
      * @return the point
      */
-    private static double[] pyramidPoint(Random rnd, double[] p) {
-        double t = rnd.nextInt(5) == 0 ? 1 : rnd.nextDouble();
-        double s = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
-        double r = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
-        double[] point = new double[3];
-        for (int k = 0; k < 3; ++k) {
-            double base = p[3 + k] + s * p[6 + k] + r * p[9 + k];
-            point[k] = p[k] + t * (base - p[k]);
-        }
-        return point;
-    }
-
-    /**
-     * A random base point of a pyramid: c + s·a + r·b.
-     *
-     * @param rnd the generator
-     * @param p   the pyramid {apex, c, a, b}
-     * @return the point
-     */
     private static double[] basePoint(Random rnd, double[] p) {
-        double s = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
-        double r = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
+        double s = edgeOrInner(rnd);
+        double r = edgeOrInner(rnd);
         double[] point = new double[3];
         for (int k = 0; k < 3; ++k)
             point[k] = p[3 + k] + s * p[6 + k] + r * p[9 + k];
         return point;
+    }
+
+    /**
+     * A random vector no longer than a length, a third of them exactly that long.
+     *
+     * @param rnd    the generator
+     * @param length the largest length (0 gives the zero vector)
+     * @return the three coordinates
+     */
+    private static double[] strayVector(Random rnd, double length) {
+        double x = rnd.nextGaussian();
+        double y = rnd.nextGaussian();
+        double z = rnd.nextGaussian();
+        double scale = (rnd.nextInt(3) == 0 ? length : length * rnd.nextDouble()) / Math.sqrt(x * x + y * y + z * z);
+        return new double[] { x * scale, y * scale, z * scale };
+    }
+
+    /**
+     * A random segment a ray of a thick bundle may cover: from the apex to a base point, both ends moved
+     * by random vectors no longer than the thickness (a third of the time by one and the same vector, as
+     * the renderer moves a shadow ray off the surface).
+     *
+     * @param rnd       the generator
+     * @param p         the pyramid {apex, c, a, b}
+     * @param thickness the pyramid's thickness
+     * @return {start, end}, 6 doubles
+     */
+    private static double[] raySegment(Random rnd, double[] p, double thickness) {
+        double[] base = basePoint(rnd, p);
+        double[] start = strayVector(rnd, thickness);
+        double[] end = rnd.nextInt(3) == 0 ? start : strayVector(rnd, thickness);
+        return new double[] { p[0] + start[0], p[1] + start[1], p[2] + start[2], base[0] + end[0], base[1] + end[1],
+                base[2] + end[2] };
+    }
+
+    /**
+     * A random point of a segment, a fifth of them at its end and a tenth at its start.
+     *
+     * @param rnd     the generator
+     * @param segment {start, end}
+     * @return the point
+     */
+    private static double[] segmentPoint(Random rnd, double[] segment) {
+        int choice = rnd.nextInt(10);
+        double t = choice < 2 ? 1 : choice == 2 ? 0 : rnd.nextDouble();
+        return new double[] { segment[0] + t * (segment[3] - segment[0]), segment[1] + t * (segment[4] - segment[1]),
+                segment[2] + t * (segment[5] - segment[2]) };
     }
 
     /**
@@ -235,55 +417,78 @@ class ShadowFrustumTest {
     }
 
     /**
+     * Whether a box holds a point.
+     *
+     * @param box   {minX, minY, minZ, maxX, maxY, maxZ}
+     * @param point the point
+     * @return true when the point is in the (closed) box
+     */
+    private static boolean holds(double[] box, double[] point) {
+        return point[0] >= box[0] && point[0] <= box[3] && point[1] >= box[1] && point[1] <= box[4]
+                && point[2] >= box[2] && point[2] <= box[5];
+    }
+
+    /**
      * Test method for {@link ShadowFrustum#meetsBox(double[], int)} and {@link ShadowFrustum#meetsPlane}
-     * on seeded random pyramids: a rejected box holds none of 200 sampled points of the pyramid, and a
-     * rejected plane separates none of 200 sampled segments from the apex to the base.
+     * on seeded random pyramids, thin and thick: a set-aside box holds none of 200 sampled points of
+     * segments the bundle's rays may cover (from the apex to the base, each end moved by up to the
+     * thickness), and a set-aside plane separates none of 200 such segments.
      */
     @Test
     void testRandomPyramids() {
         // ===== Equivalence Partitions Tests =====
-        // TC01: 300 random pyramids × 40 random boxes near them (about a random point of the pyramid,
-        // shifted by up to twice their size) and 20 random planes through a point near them
+        // TC01: 400 random pyramids, a quarter of them thin (thickness 0), the others 1e-4 to 1 thick
+        // (log-uniform), × 40 random boxes near them (about a random point of a segment, shifted by up to
+        // twice their size plus the thickness) and 20 random planes through a point near them
         Random rnd = new Random(20260112);
         int boxesRejected = 0;
         int boxesMet = 0;
         int planesRejected = 0;
         int planesMet = 0;
+        // what only the thickness kept: the answers of the same pyramid without it differ
+        int boxesThickOnly = 0;
+        int planesThickOnly = 0;
         ShadowFrustum frustum = new ShadowFrustum();
-        for (int f = 0; f < 300; ++f) {
+        ShadowFrustum thin = new ShadowFrustum();
+        for (int f = 0; f < 400; ++f) {
             double[] p = randomPyramid(rnd);
-            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11]))
+            double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
+            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], thickness))
                 continue;
+            assertTrue(thin.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], 0),
+                    "TC01: the thickness must not change whether a pyramid is flat");
+            double[][] segments = new double[200][];
             double[][] samples = new double[200][];
-            double[][] bases = new double[200][];
-            for (int i = 0; i < samples.length; ++i) {
-                samples[i] = pyramidPoint(rnd, p);
-                bases[i] = basePoint(rnd, p);
+            for (int i = 0; i < segments.length; ++i) {
+                segments[i] = raySegment(rnd, p, thickness);
+                samples[i] = segmentPoint(rnd, raySegment(rnd, p, thickness));
             }
+            String pyramid = Arrays.toString(p) + " thickness " + thickness;
             for (int b = 0; b < 40; ++b) {
-                double[] centre = pyramidPoint(rnd, p);
+                double[] centre = segmentPoint(rnd, raySegment(rnd, p, thickness));
                 double size = Math.pow(10, -3 + 3.5 * rnd.nextDouble());
                 double[] box = new double[6];
                 for (int k = 0; k < 3; ++k) {
-                    double middle = centre[k] + 2 * size * (2 * rnd.nextDouble() - 1);
+                    double middle = centre[k] + (2 * size + thickness) * (2 * rnd.nextDouble() - 1);
                     double half = size * rnd.nextDouble();
                     box[k] = middle - half;
                     box[3 + k] = middle + half;
                 }
                 if (frustum.meetsBox(box, 0)) {
                     ++boxesMet;
+                    if (!thin.meetsBox(box, 0))
+                        ++boxesThickOnly;
                     continue;
                 }
                 ++boxesRejected;
                 for (double[] q : samples)
-                    if (q[0] >= box[0] && q[0] <= box[3] && q[1] >= box[1] && q[1] <= box[4] && q[2] >= box[2]
-                            && q[2] <= box[5])
-                        fail("TC01: pyramid " + Arrays.toString(p) + " rejected the box " + Arrays.toString(box)
-                                + " that holds its point " + Arrays.toString(q));
+                    if (holds(box, q))
+                        fail("TC01: pyramid " + pyramid + " set aside the box " + Arrays.toString(box)
+                                + " that holds the point " + Arrays.toString(q) + " of a ray");
             }
             for (int pl = 0; pl < 20; ++pl) {
-                double[] q = pyramidPoint(rnd, p);
-                double scale = Math.pow(10, -2 + 3 * rnd.nextDouble());
+                double[] q = segmentPoint(rnd, raySegment(rnd, p, thickness));
+                double scale = Math.pow(10, -2 + 3 * rnd.nextDouble()) + thickness;
                 double nx = rnd.nextGaussian();
                 double ny = rnd.nextGaussian();
                 double nz = rnd.nextGaussian();
@@ -296,23 +501,30 @@ class ShadowFrustumTest {
                 double qz = q[2] + scale * rnd.nextGaussian();
                 if (frustum.meetsPlane(nx, ny, nz, qx, qy, qz)) {
                     ++planesMet;
+                    if (!thin.meetsPlane(nx, ny, nz, qx, qy, qz))
+                        ++planesThickOnly;
                     continue;
                 }
                 ++planesRejected;
+                // every end of every segment lies strictly on the side of the (unmoved) apex
                 double apex = nx * (p[0] - qx) + ny * (p[1] - qy) + nz * (p[2] - qz);
-                for (double[] e : bases) {
-                    double end = nx * (e[0] - qx) + ny * (e[1] - qy) + nz * (e[2] - qz);
-                    if (!(apex * end > 0))
-                        fail("TC01: pyramid " + Arrays.toString(p) + " rejected the plane through (" + qx + ", " + qy
-                                + ", " + qz + ") normal (" + nx + ", " + ny + ", " + nz
-                                + ") that crosses the segment from the apex to " + Arrays.toString(e));
+                for (double[] e : segments) {
+                    double start = nx * (e[0] - qx) + ny * (e[1] - qy) + nz * (e[2] - qz);
+                    double end = nx * (e[3] - qx) + ny * (e[4] - qy) + nz * (e[5] - qz);
+                    if (!(apex * start > 0 && apex * end > 0))
+                        fail("TC01: pyramid " + pyramid + " set aside the plane through (" + qx + ", " + qy + ", "
+                                + qz + ") normal (" + nx + ", " + ny + ", " + nz + ") that crosses the ray "
+                                + Arrays.toString(e));
                 }
             }
         }
-        // the boxes and planes are placed so that both answers are common: the test is not vacuous
+        // the boxes and planes are placed so that both answers are common, and so that the thickness
+        // decides often: the test is not vacuous
         assertTrue(boxesRejected > 1000 && boxesMet > 1000,
-                "TC01: too few rejected (" + boxesRejected + ") or met (" + boxesMet + ") boxes");
+                "TC01: too few set-aside (" + boxesRejected + ") or met (" + boxesMet + ") boxes");
         assertTrue(planesRejected > 300 && planesMet > 300,
-                "TC01: too few rejected (" + planesRejected + ") or met (" + planesMet + ") planes");
+                "TC01: too few set-aside (" + planesRejected + ") or met (" + planesMet + ") planes");
+        assertTrue(boxesThickOnly > 100 && planesThickOnly > 30, "TC01: the thickness decided too rarely (boxes "
+                + boxesThickOnly + ", planes " + planesThickOnly + ")");
     }
 }

@@ -41,6 +41,7 @@ class RayTracerBaseTest {
         // TC04: the ray counters start at 0
         assertEquals(0, tracer.getPrimaryRaysCount(), "TC04: the primary ray count must start at 0");
         assertEquals(0, tracer.getShadowRaysCount(), "TC04: the shadow ray count must start at 0");
+        assertEquals(0, tracer.getOpenShadowRaysCount(), "TC04: the open shadow ray count must start at 0");
 
         // ===== Boundary Values Tests =====
         // TC11: a null scene is rejected with a message naming the scene
@@ -147,7 +148,10 @@ class RayTracerBaseTest {
         assertNotEquals(origin, zero.startPixel(1, 0).random.nextLong(), "TC11: pixel (1, 0) must differ from (0, 0)");
     }
 
-    /** Test method for {@link RayTracerBase#getPrimaryRaysCount()}: the counts of all threads are added up. */
+    /**
+     * Test method for {@link RayTracerBase#getPrimaryRaysCount()}, {@link RayTracerBase#getShadowRaysCount()}
+     * and {@link RayTracerBase#getOpenShadowRaysCount()}: the counts of all threads are added up.
+     */
     @Test
     void testRayCounters() throws InterruptedException {
         RayTracerBase tracer = tracer();
@@ -155,14 +159,17 @@ class RayTracerBaseTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: 5 rays counted on this thread and 7 on another give 12
         tracer.threadState().primaryRays += 5;
+        tracer.threadState().openShadowRays += 3;
         Thread other = new Thread(() -> {
             tracer.threadState().primaryRays += 7;
             tracer.threadState().shadowRays += 2;
+            tracer.threadState().openShadowRays += 4;
         });
         other.start();
         other.join();
         assertEquals(12, tracer.getPrimaryRaysCount(), "TC01: the primary ray counts of both threads must add up");
         assertEquals(2, tracer.getShadowRaysCount(), "TC01: the shadow ray count must be the other thread's 2");
+        assertEquals(7, tracer.getOpenShadowRaysCount(), "TC01: the open shadow ray counts 3 and 4 must add up to 7");
 
         // ===== Boundary Values Tests =====
         // TC11: another tracer's counters stay at 0

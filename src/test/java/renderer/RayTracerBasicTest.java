@@ -360,6 +360,33 @@ class RayTracerBasicTest {
     }
 
     /**
+     * Test method for {@link RayTracerBase#getOpenShadowRaysCount()}: the rays of bundles nothing can
+     * block are counted as open, the others not.
+     */
+    @Test
+    void testOpenShadowRaysCount() {
+        PointLight light = squareLight();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a sheet far to the side: nothing can block the 82 rays, all open, factor 1
+        RayTracerBasic tracer = softTracer(9, halfPlane(-500, 50, new Material()));
+        assertEquals(1.0, shadowFactor(tracer, light, 0), 0, "TC01: nothing in the way must give 1");
+        assertEquals(82, tracer.getShadowRaysCount(), "TC01: 82 shadow rays");
+        assertEquals(82, tracer.getOpenShadowRaysCount(), "TC01: all 82 rays must be open");
+        // TC02: a sheet half across the light's square: 82 rays, none open
+        RayTracerBasic half = softTracer(9, halfPlane(0, 50, new Material()));
+        shadowFactor(half, light, 0);
+        assertEquals(82, half.getShadowRaysCount(), "TC02: 82 shadow rays");
+        assertEquals(0, half.getOpenShadowRaysCount(), "TC02: no ray may be open when a body is in the way");
+        // ===== Boundary Values Tests =====
+        // TC11: soft shadows off: one shadow ray, never counted as open
+        RayTracerBasic hard = softTracer(9, halfPlane(-500, 50, new Material()));
+        hard.setSoftShadows(false);
+        shadowFactor(hard, light, 0);
+        assertEquals(1, hard.getShadowRaysCount(), "TC11: one shadow ray");
+        assertEquals(0, hard.getOpenShadowRaysCount(), "TC11: a single shadow ray is no bundle");
+    }
+
+    /**
      * Test method for {@link RayTracerBasic#calcSoftShadows} with adaptive sampling: the outline first,
      * the whole grid only where the outline's rays disagree.
      */
@@ -559,18 +586,56 @@ class RayTracerBasicTest {
         return new Camera(new Point3D(0, 0, 1000), DOWN, new Vector(0, 1, 0)).setVpSize(120, 120).setVpDistance(1000);
     }
 
-    /** Renders the bundle scene through the hierarchy (with bundles) or a brute-force scan, and writes it. */
-    private static ImageWriter renderBundles(boolean bruteForce, boolean adaptive) {
-        RayTracerBasic tracer = new RayTracerBasic(bundleScene());
+    /**
+     * Renders a scene of the bundle tests (soft shadows, sqrtBeamNum 5) through the hierarchy, with
+     * bundles, or through a brute-force scan, and writes it under the pictures' folder.
+     *
+     * @param scene      the scene
+     * @param camera     the camera
+     * @param name       the picture's name
+     * @param size       the picture's width and height
+     * @param bruteForce true for the brute-force scan
+     * @param adaptive   whether adaptive sampling is on
+     * @return the rendered picture
+     */
+    private static ImageWriter renderBundleScene(Scene scene, Camera camera, String name, int size,
+                                                 boolean bruteForce, boolean adaptive) {
+        RayTracerBasic tracer = new RayTracerBasic(scene);
         tracer.setBruteForce(bruteForce);
-        ImageWriter image = new ImageWriter("bundles" + (adaptive ? "-adaptive" : "") + (bruteForce ? "-scan" : "-bvh"),
-                BUNDLE_PICTURE_SIZE, BUNDLE_PICTURE_SIZE, PICTURE_FOLDER.resolve("bundles"));
-        Render render = new Render().setImageWriter(image).setCamera(bundleCamera()).setRayTracer(tracer)
+        ImageWriter image = new ImageWriter(name + (adaptive ? "-adaptive" : "") + (bruteForce ? "-scan" : "-bvh"),
+                size, size, PICTURE_FOLDER.resolve("bundles"));
+        Render render = new Render().setImageWriter(image).setCamera(camera).setRayTracer(tracer)
                 .setSoftShadows(true).setSqrtBeamNum(5).setAdaptiveSoftShadows(adaptive)
                 .setSeed(RayTracerBase.DEFAULT_SEED);
         render.renderImage();
         render.writeToImage();
         return image;
+    }
+
+    /**
+     * Asserts that a picture rendered with bundles is the brute force's: at most 0.1 % of the pixels
+     * differ, by at most 2 levels.
+     *
+     * @param fast the picture rendered with bundles
+     * @param scan the picture rendered by the brute-force scan
+     * @param tc   the test case's label
+     */
+    private static void assertSamePicture(ImageWriter fast, ImageWriter scan, String tc) {
+        int differing = 0;
+        int worst = 0;
+        for (int y = 0; y < fast.getNy(); ++y)
+            for (int x = 0; x < fast.getNx(); ++x) {
+                int a = fast.getPixel(x, y).getRGB();
+                int b = scan.getPixel(x, y).getRGB();
+                if (a != b) {
+                    ++differing;
+                    for (int shift = 0; shift < 24; shift += 8)
+                        worst = Math.max(worst, Math.abs(((a >> shift) & 0xFF) - ((b >> shift) & 0xFF)));
+                }
+            }
+        int pixels = fast.getNx() * fast.getNy();
+        assertTrue(differing <= pixels / 1000, tc + ": " + differing + " of " + pixels + " pixels differ");
+        assertTrue(worst <= 2, tc + ": a pixel differs by " + worst + " levels");
     }
 
     /**
@@ -592,27 +657,17 @@ class RayTracerBasicTest {
                 floorNl[y][x] = hit == null || hit.geometry != floor ? Double.NaN
                         : BUNDLE_LIGHT.getZ() / hit.point.distance(BUNDLE_LIGHT);
             }
-        int pixels = BUNDLE_PICTURE_SIZE * BUNDLE_PICTURE_SIZE;
         for (boolean adaptive : new boolean[] { false, true }) {
             String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
             String shadow = adaptive ? "TC12 (adaptive sampling)" : "TC11";
-            ImageWriter fast = renderBundles(false, adaptive);
-            ImageWriter scan = renderBundles(true, adaptive);
-            int differing = 0;
-            int worst = 0;
+            ImageWriter fast = renderBundleScene(bundleScene(), camera, "bundles", BUNDLE_PICTURE_SIZE, false, adaptive);
+            ImageWriter scan = renderBundleScene(bundleScene(), camera, "bundles", BUNDLE_PICTURE_SIZE, true, adaptive);
             // the share of the light each floor pixel gets: its grey over the unshadowed kD·I·(n·l)
             double darkest = Double.POSITIVE_INFINITY;
             double brightest = 0;
             List<Double> shares = new ArrayList<>();
             for (int y = 0; y < BUNDLE_PICTURE_SIZE; ++y)
                 for (int x = 0; x < BUNDLE_PICTURE_SIZE; ++x) {
-                    int a = fast.getPixel(x, y).getRGB();
-                    int b = scan.getPixel(x, y).getRGB();
-                    if (a != b) {
-                        ++differing;
-                        for (int shift = 0; shift < 24; shift += 8)
-                            worst = Math.max(worst, Math.abs(((a >> shift) & 0xFF) - ((b >> shift) & 0xFF)));
-                    }
                     if (Double.isNaN(floorNl[y][x]))
                         continue;
                     double share = fast.getPixel(x, y).getRed() / (BUNDLE_INTENSITY * floorNl[y][x]);
@@ -627,14 +682,167 @@ class RayTracerBasicTest {
             // ===== Equivalence Partitions Tests =====
             // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
             // force, by at most 2 levels
-            assertTrue(differing <= pixels / 1000, same + ": " + differing + " of " + pixels + " pixels differ");
-            assertTrue(worst <= 2, same + ": a pixel differs by " + worst + " levels");
+            assertSamePicture(fast, scan, same);
             // ===== Boundary Values Tests =====
             // TC11: adaptive sampling off; TC12: on: the floor has an umbra (share < 0.02), fully lit
             // parts (share > 0.98) and a penumbra of at least 50 pixels strictly between them
             assertTrue(darkest < 0.02 && brightest > 0.98, shadow + ": the floor must have an umbra and lit parts, got "
                     + darkest + " to " + brightest);
             assertTrue(penumbra >= 50, shadow + ": the floor must have a penumbra, found " + penumbra + " pixels");
+        }
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Thick shadow bundles: a big light square (edge 80 at height 25) close above a sphere of 528
+    // triangles (radius 10, on a floor at z = −10). For the mesh's points between about 12° and 66°
+    // from its top the light's centre is above the tangent plane but part of the square below it: the
+    // bundle's rays leave the surface on both sides, and the pyramid starts on the surface, 0.1 thick.
+    // The camera looks straight down at x, y from −20 to 20.
+    // ---------------------------------------------------------------------------------------------
+
+    private static final int TERMINATOR_PICTURE_SIZE = 60;
+    private static final Point3D TERMINATOR_LIGHT = new Point3D(0, 0, 25);
+    private static final double TERMINATOR_HALF_EDGE = 40;
+
+    /** The terminator scene: a floor, then the mesh sphere's triangles. */
+    private static Scene terminatorScene() {
+        Scene scene = new Scene("thick shadow bundles");
+        Plane plane = new Plane(new Point3D(0, 0, -10), new Vector(0, 0, 1));
+        plane.setMaterial(new Material().setKd(1));
+        scene.geometries.add(plane);
+        Material matte = new Material().setKd(0.8);
+        for (Triangle triangle : benchmark.SphereMesh.triangles(Point3D.ZERO, 10, 12, 22))
+            scene.geometries.add(triangle.setMaterial(matte));
+        scene.lights.add(new PointLight(new Color(200, 200, 200), TERMINATOR_LIGHT)
+                .setEdgesSize(2 * TERMINATOR_HALF_EDGE).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
+        return scene;
+    }
+
+    /** The camera of the terminator pictures, straight down onto the sphere. */
+    private static Camera terminatorCamera() {
+        return new Camera(new Point3D(0, 0, 1000), DOWN, new Vector(0, 1, 0)).setVpSize(40, 40).setVpDistance(1000);
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#calcSoftShadows}: thick shadow bundles (the light's square
+     * partly below a lit point's tangent plane) change no picture — the terminator scene renders, with
+     * adaptive sampling off and on, as through a brute-force scan of every body.
+     */
+    @Test
+    void testThickShadowBundlesKeepPictures() {
+        // the pixels that see a mesh point lit by the light's centre whose tangent plane cuts the square
+        Scene reference = terminatorScene();
+        Camera camera = terminatorCamera();
+        int thick = 0;
+        int lit = 0;
+        for (int y = 0; y < TERMINATOR_PICTURE_SIZE; ++y)
+            for (int x = 0; x < TERMINATOR_PICTURE_SIZE; ++x) {
+                Ray ray = camera.constructRayThroughPixel(TERMINATOR_PICTURE_SIZE, TERMINATOR_PICTURE_SIZE, x, y);
+                GeoPoint hit = ray.findClosestGeoPoint(reference.geometries.findGeoIntersections(ray));
+                if (hit == null || !(hit.geometry instanceof Triangle))
+                    continue;
+                Vector n = hit.geometry.getNormal(hit.point);
+                if (n.dotProduct(TERMINATOR_LIGHT.subtract(hit.point)) <= 0)
+                    continue;
+                ++lit;
+                boolean above = false;
+                boolean below = false;
+                for (double sx : new double[] { -1, 1 })
+                    for (double sy : new double[] { -1, 1 }) {
+                        Point3D corner = new Point3D(sx * TERMINATOR_HALF_EDGE, sy * TERMINATOR_HALF_EDGE,
+                                TERMINATOR_LIGHT.getZ());
+                        double side = n.dotProduct(corner.subtract(hit.point));
+                        above |= side > 0;
+                        below |= side < 0;
+                    }
+                if (above && below)
+                    ++thick;
+            }
+        // the scene is as intended: most lit mesh pixels are traced through thick bundles
+        assertTrue(thick >= 300 && thick >= lit / 2, "the scene must have many thick bundles, got " + thick + " of "
+                + lit + " lit mesh pixels");
+        for (boolean adaptive : new boolean[] { false, true }) {
+            String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
+            ImageWriter fast = renderBundleScene(terminatorScene(), camera, "terminator", TERMINATOR_PICTURE_SIZE,
+                    false, adaptive);
+            ImageWriter scan = renderBundleScene(terminatorScene(), camera, "terminator", TERMINATOR_PICTURE_SIZE,
+                    true, adaptive);
+            // ===== Equivalence Partitions Tests =====
+            // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
+            // force, by at most 2 levels
+            assertSamePicture(fast, scan, same);
+        }
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Open bundles: when nothing can block any ray of a bundle, its sample points are skipped, not
+    // drawn, and the numbers drawn after them must stay those the brute force draws. Two square lights,
+    // each of one colour, over a floor: light A (red, edge 10, at (0, 0, 50)) reaches most floor points
+    // through open bundles; light B (green, edge 20, at (60, 0, 50)), traced after A, throws the soft
+    // shadow of a sphere (radius 5 at (30, 0, 10)) around (22.5, 0, 0). The camera looks straight down
+    // at x from 2 to 42, y from −20 to 20.
+    // ---------------------------------------------------------------------------------------------
+
+    private static final int OPEN_PICTURE_SIZE = 60;
+    private static final Point3D OPEN_LIGHT_A = new Point3D(0, 0, 50);
+    private static final Point3D OPEN_LIGHT_B = new Point3D(60, 0, 50);
+
+    /** The open-bundles scene: the floor, the sphere, light A then light B. */
+    private static Scene openScene() {
+        Scene scene = new Scene("open bundles");
+        scene.geometries.add(floor(new Material().setKd(1), Color.BLACK),
+                new Sphere(new Point3D(30, 0, 10), 5).setMaterial(new Material().setKd(1)));
+        scene.lights.add(new PointLight(new Color(200, 0, 0), OPEN_LIGHT_A).setEdgesSize(10)
+                .setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
+        scene.lights.add(new PointLight(new Color(0, 200, 0), OPEN_LIGHT_B).setEdgesSize(20)
+                .setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
+        return scene;
+    }
+
+    /** The camera of the open-bundles pictures, straight down onto the floor. */
+    private static Camera openCamera() {
+        return new Camera(new Point3D(22, 0, 1000), DOWN, new Vector(0, 1, 0)).setVpSize(40, 40).setVpDistance(1000);
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#calcSoftShadows}: a bundle nothing can block draws no sample
+     * points but keeps the random stream where drawing them would leave it — a second light's soft
+     * shadow, where the first light's bundles are open, renders as through a brute-force scan (which
+     * draws every sample point).
+     */
+    @Test
+    void testOpenBundlesKeepPictures() {
+        Scene reference = openScene();
+        Camera camera = openCamera();
+        Plane floor = (Plane) reference.geometries.getGeometries().get(0);
+        for (boolean adaptive : new boolean[] { false, true }) {
+            String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
+            String penumbra = adaptive ? "TC12 (adaptive sampling)" : "TC11";
+            ImageWriter fast = renderBundleScene(openScene(), camera, "open", OPEN_PICTURE_SIZE, false, adaptive);
+            ImageWriter scan = renderBundleScene(openScene(), camera, "open", OPEN_PICTURE_SIZE, true, adaptive);
+            // floor pixels fully lit by A (red share > 0.98) in B's penumbra (green share in (0.05, 0.95))
+            int openInPenumbra = 0;
+            for (int y = 0; y < OPEN_PICTURE_SIZE; ++y)
+                for (int x = 0; x < OPEN_PICTURE_SIZE; ++x) {
+                    Ray ray = camera.constructRayThroughPixel(OPEN_PICTURE_SIZE, OPEN_PICTURE_SIZE, x, y);
+                    GeoPoint hit = ray.findClosestGeoPoint(reference.geometries.findGeoIntersections(ray));
+                    if (hit == null || hit.geometry != floor)
+                        continue;
+                    double shareA = fast.getPixel(x, y).getRed()
+                            / (200 * OPEN_LIGHT_A.getZ() / hit.point.distance(OPEN_LIGHT_A));
+                    double shareB = fast.getPixel(x, y).getGreen()
+                            / (200 * OPEN_LIGHT_B.getZ() / hit.point.distance(OPEN_LIGHT_B));
+                    if (shareA > 0.98 && shareB > 0.05 && shareB < 0.95)
+                        ++openInPenumbra;
+                }
+            // ===== Equivalence Partitions Tests =====
+            // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
+            // force, by at most 2 levels
+            assertSamePicture(fast, scan, same);
+            // ===== Boundary Values Tests =====
+            // TC11: adaptive sampling off; TC12: on: at least 50 floor pixels get all of A's light (open
+            // bundles, sample points skipped) and part of B's (its sample points drawn after the skip)
+            assertTrue(openInPenumbra >= 50, penumbra + ": too few pixels lit by A in B's penumbra: " + openInPenumbra);
         }
     }
 }

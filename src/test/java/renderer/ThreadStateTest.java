@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.SplittableRandom;
-
 import org.junit.jupiter.api.Test;
 
 /**
@@ -13,10 +11,10 @@ import org.junit.jupiter.api.Test;
  */
 class ThreadStateTest {
 
-    /** Test method for {@link ThreadState#ThreadState(SplittableRandom)}: the stream kept, counters at 0. */
+    /** Test method for {@link ThreadState#ThreadState(SplitMix64)}: the stream kept, counters at 0. */
     @Test
     void testConstructor() {
-        SplittableRandom random = new SplittableRandom(1);
+        SplitMix64 random = new SplitMix64(1);
         ThreadState state = new ThreadState(random);
 
         // ===== Equivalence Partitions Tests =====
@@ -24,12 +22,13 @@ class ThreadStateTest {
         assertSame(random, state.random, "TC01: the state must keep the stream given");
         assertEquals(0, state.primaryRays, "TC01: the primary ray count must start at 0");
         assertEquals(0, state.shadowRays, "TC01: the shadow ray count must start at 0");
+        assertEquals(0, state.openShadowRays, "TC01: the open shadow ray count must start at 0");
     }
 
     /** Test method for {@link ThreadState#points(JitteredGrid)}: room for 2k² coordinates, reused. */
     @Test
     void testPoints() {
-        ThreadState state = new ThreadState(new SplittableRandom(1));
+        ThreadState state = new ThreadState(new SplitMix64(1));
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a 3 × 3 grid gets room for at least 18 coordinates
@@ -44,9 +43,9 @@ class ThreadStateTest {
 
         // ===== Boundary Values Tests =====
         // TC11: a 1 × 1 grid on a new state gets room for at least 2 coordinates, and the grid can fill it
-        double[] single = new ThreadState(new SplittableRandom(2)).points(new JitteredGrid(1));
+        double[] single = new ThreadState(new SplitMix64(2)).points(new JitteredGrid(1));
         assertTrue(single.length >= 2, "TC11: a 1 × 1 grid needs 2 coordinates, got " + single.length);
-        new JitteredGrid(1).sample(new SplittableRandom(2), single);
+        new JitteredGrid(1).sample(new SplitMix64(2), single);
         assertTrue(single[0] >= 0 && single[0] < 1 && single[1] >= 0 && single[1] < 1,
                 "TC11: the single point must lie in [0,1)²");
     }
