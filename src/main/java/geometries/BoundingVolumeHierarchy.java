@@ -34,6 +34,9 @@ public final class BoundingVolumeHierarchy {
     private static final double TRAVERSAL_COST = 1.0;
     /** Boxes grow by this fraction of their size (plus an absolute bit) so flat bodies are hit. */
     private static final double PADDING = 1e-9;
+    /** The box around nothing, which any box grows: copied, never changed. */
+    private static final double[] EMPTY_BOX = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+            Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
 
@@ -513,9 +516,10 @@ public final class BoundingVolumeHierarchy {
             double low = centroidBox[axis];
             double extent = centroidBox[3 + axis] - low;
             int count = end - start;
+            double binsPerUnit = BINS / extent;
             int bin = count <= MAX_LEAF_SIZE || level >= MAX_DEPTH || !(extent > 0) ? -1
-                    : bestSplit(node, start, end, axis, low, extent);
-            int middle = bin < 0 ? start : partition(start, end, axis, low, extent, bin);
+                    : bestSplit(node, start, end, axis, low, binsPerUnit);
+            int middle = bin < 0 ? start : partition(start, end, axis, low, binsPerUnit, bin);
             if (middle == start || middle == end) {
                 nodeLinks[2 * node] = start;
                 nodeLinks[2 * node + 1] = count;
@@ -531,9 +535,9 @@ public final class BoundingVolumeHierarchy {
 
         /** Sets a node's box around bodies [start, end) and returns the box around their centroids. */
         private double[] enclose(int node, int start, int end) {
-            double[] centroidBox = emptyBox();
+            double[] centroidBox = EMPTY_BOX.clone();
             int b = 6 * node;
-            System.arraycopy(emptyBox(), 0, nodeBounds, b, 6);
+            System.arraycopy(EMPTY_BOX, 0, nodeBounds, b, 6);
             for (int i = start; i < end; ++i) {
                 int body = order[i];
                 growBox(nodeBounds, b, boxes, 6 * body);
@@ -552,30 +556,30 @@ public final class BoundingVolumeHierarchy {
             return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
         }
 
-        private int binOf(int body, int axis, double low, double extent) {
-            return Math.min(BINS - 1, (int) ((centroids[3 * body + axis] - low) / extent * BINS));
+        private int binOf(int body, int axis, double low, double binsPerUnit) {
+            return Math.min(BINS - 1, (int) ((centroids[3 * body + axis] - low) * binsPerUnit));
         }
 
         /**
          * The bin after which splitting costs least by the surface-area heuristic, or -1 when no split
          * is cheaper than a leaf.
          */
-        private int bestSplit(int node, int start, int end, int axis, double low, double extent) {
+        private int bestSplit(int node, int start, int end, int axis, double low, double binsPerUnit) {
             java.util.Arrays.fill(binCounts, 0);
             for (int k = 0; k < BINS; ++k)
-                System.arraycopy(emptyBox(), 0, binBoxes, 6 * k, 6);
+                System.arraycopy(EMPTY_BOX, 0, binBoxes, 6 * k, 6);
             for (int i = start; i < end; ++i) {
                 int body = order[i];
-                int k = binOf(body, axis, low, extent);
+                int k = binOf(body, axis, low, binsPerUnit);
                 ++binCounts[k];
                 growBox(binBoxes, 6 * k, boxes, 6 * body);
             }
-            double[] sweep = emptyBox();
+            double[] sweep = EMPTY_BOX.clone();
             for (int k = BINS - 1; k > 0; --k) {
                 growBox(sweep, 0, binBoxes, 6 * k);
                 rightAreas[k] = area(sweep, 0);
             }
-            System.arraycopy(emptyBox(), 0, sweep, 0, 6);
+            System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
             int leftCount = 0;
             int best = -1;
             // split when TRAVERSAL_COST·A + Σ n·A(child) beats the leaf's count·A
@@ -596,11 +600,11 @@ public final class BoundingVolumeHierarchy {
         }
 
         /** Moves the bodies of bins up to and including bin to the front; returns where the rest start. */
-        private int partition(int start, int end, int axis, double low, double extent, int bin) {
+        private int partition(int start, int end, int axis, double low, double binsPerUnit, int bin) {
             int i = start;
             int j = end - 1;
             while (i <= j) {
-                if (binOf(order[i], axis, low, extent) <= bin)
+                if (binOf(order[i], axis, low, binsPerUnit) <= bin)
                     ++i;
                 else {
                     int swap = order[i];
@@ -609,11 +613,6 @@ public final class BoundingVolumeHierarchy {
                 }
             }
             return i;
-        }
-
-        private double[] emptyBox() {
-            return new double[] { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                    Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
         }
 
         private void growBox(double[] box, int b, double[] other, int o) {
