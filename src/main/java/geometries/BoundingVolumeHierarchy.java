@@ -23,6 +23,11 @@ import static primitives.Util.requireNonNull;
  * methods. Unbounded bodies (planes, tubes) stay outside the tree and are tested on every ray, as
  * are intersectables that are not {@link Geometry}s.
  * <p>
+ * The shadow rays of one soft shadow can be traced as a bundle: {@link #gather} walks the tree once
+ * with the bundle's pyramid (a {@link ShadowFrustum}) and keeps the few bodies it meets, or their
+ * smallest subtree when they are many; {@link #gatheredTransmittance} then tests each ray against
+ * those alone.
+ * <p>
  * Queries take a {@link Query}, the caller's per-thread scratch space, and allocate nothing but
  * the {@link GeoPoint} a closest-hit query returns.
  */

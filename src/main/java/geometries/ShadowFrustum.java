@@ -57,25 +57,12 @@ public final class ShadowFrustum {
                        double ax, double ay, double az, double bx, double by, double bz, double thickness) {
         if (!(thickness >= 0))
             throw new IllegalArgumentException("the thickness of a shadow frustum must be 0 or more, got " + thickness);
-        double[] v = vertices;
         setVertex(0, ox, oy, oz);
         setVertex(1, cx + ax + bx, cy + ay + by, cz + az + bz);
         setVertex(2, cx - ax + bx, cy - ay + by, cz - az + bz);
         setVertex(3, cx - ax - bx, cy - ay - by, cz - az - bz);
         setVertex(4, cx + ax - bx, cy + ay - by, cz + az - bz);
-        double size = 0;
-        for (int k = 0; k < 3; ++k) {
-            hull[k] = Double.POSITIVE_INFINITY;
-            hull[3 + k] = Double.NEGATIVE_INFINITY;
-            for (int i = 0; i < 5; ++i) {
-                double x = v[3 * i + k];
-                hull[k] = Math.min(hull[k], x);
-                hull[3 + k] = Math.max(hull[3 + k], x);
-                size = Math.max(size, Math.abs(x));
-            }
-        }
-        for (int k = 0; k < 3; ++k)
-            size += hull[3 + k] - hull[k];
+        double size = setHull();
         margin = MARGIN * size + thickness;
         flatness = FLAT * size;
         valid = false;
@@ -87,6 +74,28 @@ public final class ShadowFrustum {
         double nz = ax * by - ay * bx;
         valid = setPlane(4, nx, ny, nz, nx * cx + ny * cy + nz * cz, ox, oy, oz);
         return valid;
+    }
+
+    /**
+     * Sets the box around the vertices.
+     *
+     * @return the pyramid's size: its largest coordinate plus the box's three extents
+     */
+    private double setHull() {
+        double size = 0;
+        for (int k = 0; k < 3; ++k) {
+            hull[k] = Double.POSITIVE_INFINITY;
+            hull[3 + k] = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i < 5; ++i) {
+                double x = vertices[3 * i + k];
+                hull[k] = Math.min(hull[k], x);
+                hull[3 + k] = Math.max(hull[3 + k], x);
+                size = Math.max(size, Math.abs(x));
+            }
+        }
+        for (int k = 0; k < 3; ++k)
+            size += hull[3 + k] - hull[k];
+        return size;
     }
 
     private void setVertex(int i, double x, double y, double z) {

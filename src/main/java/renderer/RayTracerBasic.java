@@ -228,6 +228,17 @@ public class RayTracerBasic extends RayTracerBase {
          * plane for all its rays to leave the surface on the same side.
          */
         private static final double SIDE_MARGIN = 1e-6;
+
+        /** How the rays of a bundle are traced. */
+        private enum Bundle {
+            /** Nothing can block any of them: each lets all the light through, untested. */
+            OPEN,
+            /** Each is tested against the bodies gathered for the bundle. */
+            GATHERED,
+            /** The bundle's pyramid is flat: each walks the whole hierarchy. */
+            WHOLE
+        }
+
         private final double cx;
         private final double cy;
         private final double cz;
@@ -247,9 +258,7 @@ public class RayTracerBasic extends RayTracerBase {
         private final double nz;
         private final BoundingVolumeHierarchy bvh;
         private final BoundingVolumeHierarchy.Query query;
-        /** 1 when the bundle's rays are tested against the bodies gathered for it, 0 when nothing can
-         * block them, -1 when they walk the whole hierarchy. */
-        private final int gathered;
+        private final Bundle bundle;
 
         LightSquare(AreaLightSource light, Point3D p, Vector n, BoundingVolumeHierarchy bvh,
                     BoundingVolumeHierarchy.Query query) {
@@ -275,7 +284,7 @@ public class RayTracerBasic extends RayTracerBase {
             this.nz = n.getZ() * delta;
             this.bvh = bvh;
             this.query = query;
-            this.gathered = gather();
+            this.bundle = gather();
         }
 
         /**
@@ -283,10 +292,9 @@ public class RayTracerBasic extends RayTracerBase {
          * same side, they start at one point DELTA off the surface, the apex of their pyramid;
          * otherwise the pyramid starts at the point itself and is DELTA thick.
          *
-         * @return 1 when bodies were gathered, 0 when no ray can be blocked, -1 when the rays must
-         *         walk the hierarchy
+         * @return how the bundle's rays are to be traced
          */
-        private int gather() {
+        private Bundle gather() {
             double half = edges / 2;
             double ax = ux * half;
             double ay = uy * half;
@@ -304,13 +312,15 @@ public class RayTracerBasic extends RayTracerBase {
             double side = centre - spread > margin ? 1 : centre + spread < -margin ? -1 : 0;
             double thickness = side == 0 ? Ray.DELTA : 0;
             ShadowFrustum frustum = query.getFrustum();
-            return frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
-                    cz + side * nz, ax, ay, az, bx, by, bz, thickness) ? (bvh.gather(query) ? 1 : 0) : -1;
+            if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
+                    cz + side * nz, ax, ay, az, bx, by, bz, thickness))
+                return Bundle.WHOLE;
+            return bvh.gather(query) ? Bundle.GATHERED : Bundle.OPEN;
         }
 
         /** @return true when no ray of the bundle can be blocked: each lets all the light through */
         boolean isOpen() {
-            return gathered == 0;
+            return bundle == Bundle.OPEN;
         }
 
         /**
@@ -321,7 +331,7 @@ public class RayTracerBasic extends RayTracerBase {
          * @return the transparency in [0, 1]
          */
         double visibility(Ray ray, double distance) {
-            if (gathered == 0)
+            if (isOpen())
                 return 1;
             Point3D p0 = ray.getP0();
             Vector dir = ray.getDir();
@@ -331,7 +341,8 @@ public class RayTracerBasic extends RayTracerBase {
         /** The transparency along one ray of the bundle. */
         private double transmittance(double ox, double oy, double oz, double dx, double dy, double dz,
                                      double distance) {
-            return gathered < 0 ? bvh.transmittance(ox, oy, oz, dx, dy, dz, distance, MIN_CALC_COLOR_K, query)
+            return bundle == Bundle.WHOLE
+                    ? bvh.transmittance(ox, oy, oz, dx, dy, dz, distance, MIN_CALC_COLOR_K, query)
                     : bvh.gatheredTransmittance(ox, oy, oz, dx, dy, dz, distance, MIN_CALC_COLOR_K, query);
         }
 
@@ -346,7 +357,7 @@ public class RayTracerBasic extends RayTracerBase {
          * @return the sum of the rays' transparencies
          */
         double visibility(double[] samples, int from, int to) {
-            if (gathered == 0) // nothing can block any ray of the bundle
+            if (isOpen())
                 return to - from;
             double ktr = 0;
             for (int s = from; s < to; ++s) {
