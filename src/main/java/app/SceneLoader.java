@@ -186,5 +186,4 @@ public final class SceneLoader {
             throw element.error(e.getMessage(), e);
         }
     }
-
 }

@@ -81,12 +81,12 @@ public final class BoundingVolumeHierarchy {
         /** When {@link #gather} found too many bodies: the node below which all of them lie. */
         private int subtree;
         /** The unbounded bodies {@link #gather} found, and how many. */
-        private final int[] gatheredUnbounded;
+        private final Geometry[] gatheredUnbounded;
         private int unboundedCount;
 
-        private Query(int stackSize, int unboundedCount) {
+        private Query(int stackSize, int unboundedLength) {
             this.stack = new int[stackSize];
-            this.gatheredUnbounded = new int[unboundedCount];
+            this.gatheredUnbounded = new Geometry[unboundedLength];
         }
 
         /** @return the pyramid of the shadow bundle the next {@link #gather} looks at */
@@ -239,9 +239,9 @@ public final class BoundingVolumeHierarchy {
     public boolean gather(Query query) {
         ShadowFrustum frustum = query.frustum;
         int found = 0;
-        for (int i = 0; i < unbounded.length; ++i)
-            if (!culling || unbounded[i].mayMeet(frustum))
-                query.gatheredUnbounded[found++] = i;
+        for (Geometry body : unbounded)
+            if (!culling || body.mayMeet(frustum))
+                query.gatheredUnbounded[found++] = body;
         query.unboundedCount = found;
         query.gatheredCount = 0;
         if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0))
@@ -300,7 +300,8 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * {@link #transmittance} for a ray of the bundle of the last {@link #gather}: only the gathered
-     * bodies are tested, the answer is the same.
+     * bodies are tested, and the answer is the same (up to the order in which the {@code kT} of
+     * several transparent bodies are multiplied, which may move its last bit).
      *
      * @param ox    the ray's origin, x
      * @param oy    the ray's origin, y
@@ -318,7 +319,7 @@ public final class BoundingVolumeHierarchy {
         query.maxT = maxT;
         query.ktr = 1;
         for (int i = 0; i < query.unboundedCount; ++i)
-            if (!visit(unbounded[query.gatheredUnbounded[i]], query, ox, oy, oz, dx, dy, dz, true, minK))
+            if (!visit(query.gatheredUnbounded[i], query, ox, oy, oz, dx, dy, dz, true, minK))
                 return 0;
         if (query.gatheredCount < 0) {
             if (!walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK))

@@ -23,7 +23,6 @@ public abstract class RayTracerBase {
 
     /** The scene traced. */
     protected final Scene scene;
-    private int sqrtBeamNum = DEFAULT_SQRT_BEAM_NUM;
     private JitteredGrid beamGrid = new JitteredGrid(DEFAULT_SQRT_BEAM_NUM);
     private boolean softShadows;
     private boolean adaptiveSoftShadows;
@@ -67,7 +66,6 @@ public abstract class RayTracerBase {
         if (sqrtBeamNum < 1)
             throw new IllegalArgumentException("sqrtBeamNum must be 1 or more, got " + sqrtBeamNum);
         this.beamGrid = new JitteredGrid(sqrtBeamNum);
-        this.sqrtBeamNum = sqrtBeamNum;
         return this;
     }
 
@@ -108,7 +106,7 @@ public abstract class RayTracerBase {
 
     /** @return the square root of the number of shadow rays per light */
     public int getSqrtBeamNum() {
-        return sqrtBeamNum;
+        return beamGrid.getSqrtSamples();
     }
 
     /** @return the grid the shadow rays' points on a light's square come from */

@@ -183,12 +183,12 @@ public class RayTracerBasic extends RayTracerBase {
      * With adaptive sampling, the grid's outline is traced first and the inner cells only when its
      * rays and the centre's disagree.
      *
-     * @param light         the light
-     * @param centreRay     the shadow ray to the centre of the light's square
+     * @param light          the light
+     * @param centreRay      the shadow ray to the centre of the light's square
      * @param centreDistance the distance from the point to that centre
-     * @param n             the surface normal at the point
-     * @param point         the lit point
-     * @param state         the calling thread's state
+     * @param n              the surface normal at the point
+     * @param point          the lit point
+     * @param state          the calling thread's state
      * @return the average transparency of the rays, in [0, 1]
      */
     double calcSoftShadows(AreaLightSource light, Ray centreRay, double centreDistance, Vector n, Point3D point,

@@ -151,8 +151,7 @@ class RenderSettingsTest {
         // TC11: a render without a ray tracer: MissingResourceException naming the ray tracer
         MissingResourceException e = assertThrows(MissingResourceException.class,
                 () -> CUSTOM.applyTo(new Render()), "TC11: applyTo without a ray tracer must fail");
-        assertTrue(e.getMessage().contains("ray tracer"), "TC11: the message must name the ray tracer, got "
-                + e.getMessage());
+        assertMessage(e, "ray tracer", "TC11");
         // TC12: counts of 1 (sqrtBeamNum 1, anti-aliasing 1) are applied
         RayTracerBase tracer1 = new RayTracerBasic(new Scene("ones"));
         Render render1 = new Render().setRayTracer(tracer1).setAntiAliasing(5);

@@ -61,37 +61,45 @@ class SceneParserTest {
         return text.indexOf(tagEnd) + tagEnd.length() + 1;
     }
 
+    /**
+     * The validator's message for an attribute value not of its type: "cvc-attribute.3: The value 'V' of
+     * attribute 'A' on element 'E' is not valid with respect to its type, 'T'."
+     *
+     * @param value     the value, as in the file
+     * @param attribute the attribute's name
+     * @param element   the element's name
+     * @param type      the schema type's name
+     * @return the message
+     */
+    private static String badValue(String value, String attribute, String element, String type) {
+        return "cvc-attribute.3: The value '" + value + "' of attribute '" + attribute + "' on element '" + element
+                + "' is not valid with respect to its type, '" + type + "'.";
+    }
+
     /** Test method for {@link SceneParser#plain(String)}: attribute messages. */
     @Test
     void testPlainAttributes() {
         // ===== Equivalence Partitions Tests =====
         // TC01: a bad number → "attribute 'radius' of <sphere> must be a number, got '5x0'"
-        assertEquals("attribute 'radius' of <sphere> must be a number, got '5x0'", SceneParser.plain(
-                "cvc-attribute.3: The value '5x0' of attribute 'radius' on element 'sphere' is not valid with "
-                        + "respect to its type, 'number'."), "TC01: wrong bad-number message");
+        assertEquals("attribute 'radius' of <sphere> must be a number, got '5x0'",
+                SceneParser.plain(badValue("5x0", "radius", "sphere", "number")), "TC01: wrong bad-number message");
         // TC02: each schema type in words: triple, count, whole, seed, flag, path, vertices
-        assertEquals("attribute 'center' of <sphere> must be three numbers, got '0 0'", SceneParser.plain(
-                "cvc-attribute.3: The value '0 0' of attribute 'center' on element 'sphere' is not valid with "
-                        + "respect to its type, 'triple'."), "TC02: wrong triple message");
-        assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'", SceneParser.plain(
-                "cvc-attribute.3: The value '0' of attribute 'width' on element 'image' is not valid with "
-                        + "respect to its type, 'count'."), "TC02: wrong count message");
-        assertEquals("attribute 'grid' of <image> must be a whole number, 0 or more, got '-1'", SceneParser.plain(
-                "cvc-attribute.3: The value '-1' of attribute 'grid' on element 'image' is not valid with "
-                        + "respect to its type, 'whole'."), "TC02: wrong whole message");
-        assertEquals("attribute 'seed' of <render> must be a whole number, got '1.5'", SceneParser.plain(
-                "cvc-attribute.3: The value '1.5' of attribute 'seed' on element 'render' is not valid with "
-                        + "respect to its type, 'seed'."), "TC02: wrong seed message");
-        assertEquals("attribute 'soft-shadows' of <render> must be true or false, got 'yes'", SceneParser.plain(
-                "cvc-attribute.3: The value 'yes' of attribute 'soft-shadows' on element 'render' is not valid "
-                        + "with respect to its type, 'flag'."), "TC02: wrong flag message");
-        assertEquals("attribute 'file' of <mesh> must be a file name, got ''", SceneParser.plain(
-                "cvc-attribute.3: The value '' of attribute 'file' on element 'mesh' is not valid with "
-                        + "respect to its type, 'path'."), "TC02: wrong path message");
+        assertEquals("attribute 'center' of <sphere> must be three numbers, got '0 0'",
+                SceneParser.plain(badValue("0 0", "center", "sphere", "triple")), "TC02: wrong triple message");
+        assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'",
+                SceneParser.plain(badValue("0", "width", "image", "count")), "TC02: wrong count message");
+        assertEquals("attribute 'grid' of <image> must be a whole number, 0 or more, got '-1'",
+                SceneParser.plain(badValue("-1", "grid", "image", "whole")), "TC02: wrong whole message");
+        assertEquals("attribute 'seed' of <render> must be a whole number, got '1.5'",
+                SceneParser.plain(badValue("1.5", "seed", "render", "seed")), "TC02: wrong seed message");
+        assertEquals("attribute 'soft-shadows' of <render> must be true or false, got 'yes'",
+                SceneParser.plain(badValue("yes", "soft-shadows", "render", "flag")), "TC02: wrong flag message");
+        assertEquals("attribute 'file' of <mesh> must be a file name, got ''",
+                SceneParser.plain(badValue("", "file", "mesh", "path")), "TC02: wrong path message");
         assertEquals("attribute 'vertices' of <polygon> must be a list of numbers, x y z for each of 3 or more "
-                + "vertices, got '0 0 0'", SceneParser.plain(
-                "cvc-attribute.3: The value '0 0 0' of attribute 'vertices' on element 'polygon' is not valid "
-                        + "with respect to its type, 'vertices'."), "TC02: wrong vertices message");
+                + "vertices, got '0 0 0'",
+                SceneParser.plain(badValue("0 0 0", "vertices", "polygon", "vertices")),
+                "TC02: wrong vertices message");
         // TC03: an attribute the element does not have → "unknown attribute 'foo' on <sphere>"
         assertEquals("unknown attribute 'foo' on <sphere>", SceneParser.plain(
                 "cvc-complex-type.3.2.2: Attribute 'foo' is not allowed to appear in element 'sphere'."),
@@ -103,13 +111,13 @@ class SceneParserTest {
 
         // ===== Boundary Values Tests =====
         // TC11: a type without words (a built-in 'double') → "a double"
-        assertEquals("attribute 'kD' of <sphere> must be a double, got 'x'", SceneParser.plain(
-                "cvc-attribute.3: The value 'x' of attribute 'kD' on element 'sphere' is not valid with "
-                        + "respect to its type, 'double'."), "TC11: an unnamed type must read 'a <type>'");
+        assertEquals("attribute 'kD' of <sphere> must be a double, got 'x'",
+                SceneParser.plain(badValue("x", "kD", "sphere", "double")),
+                "TC11: an unnamed type must read 'a <type>'");
         // TC12: a value with spaces and a quote in it is kept whole: got '5' x'
-        assertEquals("attribute 'radius' of <sphere> must be a number, got '5' x'", SceneParser.plain(
-                "cvc-attribute.3: The value '5' x' of attribute 'radius' on element 'sphere' is not valid with "
-                        + "respect to its type, 'number'."), "TC12: the whole value must be kept");
+        assertEquals("attribute 'radius' of <sphere> must be a number, got '5' x'",
+                SceneParser.plain(badValue("5' x", "radius", "sphere", "number")),
+                "TC12: the whole value must be kept");
     }
 
     /** Test method for {@link SceneParser#plain(String)}: element and document messages. */

@@ -121,6 +121,27 @@ class SphereMeshTest {
     }
 
     /**
+     * Numbers the distinct vertex objects of triangles and counts their directed edges, each edge from
+     * vertex {@code from} to vertex {@code to} (in the triangle's order) keyed {@code from << 32 | to}.
+     *
+     * @param triangles the triangles
+     * @param index     filled with a number for each distinct vertex object
+     * @return how often each directed edge appears
+     */
+    private static Map<Long, Integer> directedEdges(List<Triangle> triangles, Map<Point3D, Integer> index) {
+        Map<Long, Integer> directed = new HashMap<>();
+        for (Triangle t : triangles) {
+            List<Point3D> v = t.getVertices();
+            for (int e = 0; e < 3; ++e) {
+                long from = index.computeIfAbsent(v.get(e), p -> index.size());
+                long to = index.computeIfAbsent(v.get((e + 1) % 3), p -> index.size());
+                directed.merge(from << 32 | to, 1, Integer::sum);
+            }
+        }
+        return directed;
+    }
+
+    /**
      * Test method for {@link benchmark.SphereMesh#triangles(Point3D, double, int, int)}: the mesh is
      * closed — every edge is shared by exactly two triangles, which run along it in opposite directions.
      */
@@ -129,15 +150,7 @@ class SphereMeshTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: every directed edge appears once and its reverse once, so 3·1472/2 = 2208 edges in all
         Map<Point3D, Integer> index = new IdentityHashMap<>();
-        Map<Long, Integer> directed = new HashMap<>();
-        for (Triangle t : mesh) {
-            List<Point3D> v = t.getVertices();
-            for (int e = 0; e < 3; ++e) {
-                long from = index.computeIfAbsent(v.get(e), p -> index.size());
-                long to = index.computeIfAbsent(v.get((e + 1) % 3), p -> index.size());
-                directed.merge(from << 32 | to, 1, Integer::sum);
-            }
-        }
+        Map<Long, Integer> directed = directedEdges(mesh, index);
         // vertices are shared objects: 2 poles + 23 rings of 32 = 738 distinct ones (Euler: V - E + F = 2)
         assertEquals(738, index.size(), "TC01: wrong number of distinct vertex objects");
         for (Map.Entry<Long, Integer> edge : directed.entrySet()) {
@@ -152,15 +165,7 @@ class SphereMeshTest {
         // ===== Boundary Values Tests =====
         // TC11: the smallest mesh (2 rings × 3 segments: a triangular bipyramid) has 5 vertices and 9 edges
         Map<Point3D, Integer> smallIndex = new IdentityHashMap<>();
-        Map<Long, Integer> smallEdges = new HashMap<>();
-        for (Triangle t : SphereMesh.triangles(CENTER, RADIUS, 2, 3)) {
-            List<Point3D> v = t.getVertices();
-            for (int e = 0; e < 3; ++e) {
-                long from = smallIndex.computeIfAbsent(v.get(e), p -> smallIndex.size());
-                long to = smallIndex.computeIfAbsent(v.get((e + 1) % 3), p -> smallIndex.size());
-                smallEdges.merge(from << 32 | to, 1, Integer::sum);
-            }
-        }
+        Map<Long, Integer> smallEdges = directedEdges(SphereMesh.triangles(CENTER, RADIUS, 2, 3), smallIndex);
         assertEquals(5, smallIndex.size(), "TC11: wrong number of vertices");
         assertEquals(18, smallEdges.size(), "TC11: wrong number of directed edges");
         for (long key : smallEdges.keySet())

@@ -8,6 +8,9 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestRandom.edgeOrInner;
+import static testutil.TestRandom.randomPoint;
+import static testutil.TestRandom.randomUnit;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -71,37 +74,6 @@ class BoundingVolumeHierarchyTest {
     }
 
     // ---------------------------------------------------------------- random scenes and rays
-
-    /**
-     * A random unit vector, uniform over the sphere.
-     *
-     * @param rnd the generator
-     * @return the vector
-     */
-    private static Vector randomUnit(Random rnd) {
-        while (true) {
-            double x = rnd.nextGaussian();
-            double y = rnd.nextGaussian();
-            double z = rnd.nextGaussian();
-            double length = Math.sqrt(x * x + y * y + z * z);
-            if (length > 1e-3)
-                return new Vector(x / length, y / length, z / length);
-        }
-    }
-
-    /**
-     * A random point in the cube [-size, size]³ around a centre.
-     *
-     * @param rnd    the generator
-     * @param center the cube's centre
-     * @param size   the cube's half-width
-     * @return the point
-     */
-    private static Point3D randomPoint(Random rnd, Point3D center, double size) {
-        return new Point3D(center.getX() + size * (2 * rnd.nextDouble() - 1),
-                center.getY() + size * (2 * rnd.nextDouble() - 1),
-                center.getZ() + size * (2 * rnd.nextDouble() - 1));
-    }
 
     /**
      * A random sphere.
@@ -694,7 +666,7 @@ class BoundingVolumeHierarchyTest {
 
         // ===== Boundary Values Tests =====
         // TC11: an empty composite (also one of empty composites): 0 nodes, depth 0, no hit, transmittance 1
-        for (Geometries empty : List.of(new Geometries(), new Geometries(new Geometries(), new Geometries(new Geometries())))) {
+        for (Geometries empty : emptyComposites()) {
             BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(empty);
             assertEquals(0, bvh.getNodesCount(), "TC11: an empty composite has no nodes");
             assertEquals(0, bvh.getDepth(), "TC11: an empty composite has depth 0");
@@ -1123,8 +1095,8 @@ class BoundingVolumeHierarchyTest {
      * @return the point
      */
     private static Point3D squarePoint(Random rnd, Point3D c, Vector a, Vector b) {
-        double s = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
-        double r = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
+        double s = edgeOrInner(rnd);
+        double r = edgeOrInner(rnd);
         return new Point3D(c.getX() + s * a.getX() + r * b.getX(), c.getY() + s * a.getY() + r * b.getY(),
                 c.getZ() + s * a.getZ() + r * b.getZ());
     }
@@ -1569,7 +1541,7 @@ class BoundingVolumeHierarchyTest {
             assertTrue(gather(scan, scanQuery, new Point3D(100, 100, 100), new Point3D(100, 100, 110), a, b),
                     "TC11: the scan of bodies must give true even where nothing is");
         }
-        for (Geometries empty : List.of(new Geometries(), new Geometries(new Geometries(), new Geometries(new Geometries())))) {
+        for (Geometries empty : emptyComposites()) {
             BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(empty);
             Query scanQuery = scan.newQuery();
             assertFalse(gather(scan, scanQuery, up, below, a, b), "TC11: an empty scan must give false");
@@ -1577,7 +1549,7 @@ class BoundingVolumeHierarchyTest {
                     "TC11: nothing may block in an empty scan");
         }
         // TC12: an empty composite (also one of empty composites): false, and every ray is open
-        for (Geometries empty : List.of(new Geometries(), new Geometries(new Geometries(), new Geometries(new Geometries())))) {
+        for (Geometries empty : emptyComposites()) {
             BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(empty);
             Query query = bvh.newQuery();
             assertFalse(gather(bvh, query, up, below, a, b), "TC12: an empty composite gathers nothing");
@@ -1669,6 +1641,15 @@ class BoundingVolumeHierarchyTest {
         assertTrue(ballBvh.gather(ballQuery), "TC22: after a refused set the ball must be gathered");
         assertRay(0, ballBvh, ballQuery, up, below, "TC22: the ray through the ball");
         assertRay(1, ballBvh, ballQuery, new Point3D(3, 0, 5), new Point3D(3, 0, -1), "TC22: a ray past the ball");
+    }
+
+    /**
+     * Composites without a body: an empty one, and one of empty composites.
+     *
+     * @return new composites
+     */
+    private static List<Geometries> emptyComposites() {
+        return List.of(new Geometries(), new Geometries(new Geometries(), new Geometries(new Geometries())));
     }
 
     /**

@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.List;
 
@@ -37,26 +38,26 @@ class CylinderTest {
         // TC02: negative radius is rejected
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new Cylinder(axis, -1, 2),
                 "TC02: negative radius accepted");
-        assertTrue(e.getMessage().contains("radius"), "TC02: message does not name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC02");
         // TC03: negative height is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Cylinder(axis, 1, -2),
                 "TC03: negative height accepted");
-        assertTrue(e.getMessage().contains("height"), "TC03: message does not name the height: " + e.getMessage());
+        assertMessage(e, "height", "TC03");
         // TC04: NaN / infinite height is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Cylinder(axis, 1, Double.NaN),
                 "TC04: NaN height accepted");
-        assertTrue(e.getMessage().contains("height"), "TC04: message does not name the height: " + e.getMessage());
+        assertMessage(e, "height", "TC04");
         e = assertThrows(IllegalArgumentException.class, () -> new Cylinder(axis, 1, Double.POSITIVE_INFINITY),
                 "TC04: infinite height accepted");
-        assertTrue(e.getMessage().contains("height"), "TC04: message does not name the height: " + e.getMessage());
+        assertMessage(e, "height", "TC04");
 
         // ===== Boundary Values Tests =====
         // TC10: zero radius is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Cylinder(axis, 0, 2), "TC10: zero radius accepted");
-        assertTrue(e.getMessage().contains("radius"), "TC10: message does not name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC10");
         // TC11: zero height is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Cylinder(axis, 1, 0), "TC11: zero height accepted");
-        assertTrue(e.getMessage().contains("height"), "TC11: message does not name the height: " + e.getMessage());
+        assertMessage(e, "height", "TC11");
     }
 
     /**

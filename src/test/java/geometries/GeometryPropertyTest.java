@@ -1,6 +1,8 @@
 package geometries;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestRandom.randomPoint;
+import static testutil.TestRandom.randomUnit;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -53,7 +55,7 @@ class GeometryPropertyTest {
         Body(Geometry geometry, Point3D centre, double size, int maxPoints, ToDoubleFunction<Point3D> surfaceDistance,
              Function<Ray, double[]> reference) {
             this(geometry, centre, size, maxPoints, surfaceDistance, reference,
-                    rnd -> randomAround(rnd, centre, 1.2 * size));
+                    rnd -> randomPoint(rnd, centre, 1.2 * size));
         }
     }
 
@@ -70,25 +72,6 @@ class GeometryPropertyTest {
 
     // ---------------------------------------------------------------- random helpers
 
-    /** A random unit vector, uniform on the sphere. */
-    private static double[] randomUnit(Random rnd) {
-        while (true) {
-            double x = rnd.nextGaussian();
-            double y = rnd.nextGaussian();
-            double z = rnd.nextGaussian();
-            double l = Math.sqrt(x * x + y * y + z * z);
-            if (l > 1e-3)
-                return new double[] { x / l, y / l, z / l };
-        }
-    }
-
-    /** A random point in the cube of half-edge {@code half} around a centre. */
-    private static Point3D randomAround(Random rnd, Point3D centre, double half) {
-        return new Point3D(centre.getX() + (2 * rnd.nextDouble() - 1) * half,
-                centre.getY() + (2 * rnd.nextDouble() - 1) * half,
-                centre.getZ() + (2 * rnd.nextDouble() - 1) * half);
-    }
-
     /** A random body size between 0.1 and 100 (log-uniform), so the tests cover several scales. */
     private static double randomSize(Random rnd) {
         return Math.pow(10, -1 + 3 * rnd.nextDouble());
@@ -96,7 +79,7 @@ class GeometryPropertyTest {
 
     /** A random centre in the cube [−50, 50]³. */
     private static Point3D randomCentre(Random rnd) {
-        return randomAround(rnd, Point3D.ZERO, 50);
+        return randomPoint(rnd, Point3D.ZERO, 50);
     }
 
     // ---------------------------------------------------------------- vector helpers (on doubles, no zero-vector traps)
@@ -273,9 +256,7 @@ class GeometryPropertyTest {
 
     private static Body randomPlane(Random rnd) {
         Point3D q0 = randomCentre(rnd);
-        double[] n = randomUnit(rnd);
-        Vector normal = new Vector(n[0], n[1], n[2]);
-        Plane plane = new Plane(q0, normal);
+        Plane plane = new Plane(q0, randomUnit(rnd));
         return new Body(plane, q0, randomSize(rnd), 1, p -> planeDistance(p, q0, plane.getNormal()),
                 ray -> planeReference(ray, q0, plane.getNormal()));
     }
@@ -284,7 +265,7 @@ class GeometryPropertyTest {
     private static Body randomPolygon(Random rnd) {
         Point3D c = randomCentre(rnd);
         double r = randomSize(rnd);
-        double[] n = randomUnit(rnd);
+        double[] n = array(randomUnit(rnd));
         double[] helper = Math.abs(n[0]) < 0.9 ? new double[] { 1, 0, 0 } : new double[] { 0, 1, 0 };
         double[] u = cross(n, helper);
         double lu = norm(u);
@@ -322,9 +303,9 @@ class GeometryPropertyTest {
         Point3D c = randomCentre(rnd);
         double size = randomSize(rnd);
         while (true) {
-            Point3D a = randomAround(rnd, c, size);
-            Point3D b = randomAround(rnd, c, size);
-            Point3D d = randomAround(rnd, c, size);
+            Point3D a = randomPoint(rnd, c, size);
+            Point3D b = randomPoint(rnd, c, size);
+            Point3D d = randomPoint(rnd, c, size);
             double[] e1 = diff(b, a);
             double[] e2 = diff(d, a);
             if (norm(cross(e1, e2)) > 0.05 * norm(e1) * norm(e2)) {
@@ -345,8 +326,7 @@ class GeometryPropertyTest {
     private static Body randomTube(Random rnd) {
         Point3D c = randomCentre(rnd);
         double r = randomSize(rnd);
-        double[] a = randomUnit(rnd);
-        Ray axis = new Ray(c, new Vector(a[0], a[1], a[2]));
+        Ray axis = new Ray(c, randomUnit(rnd));
         Tube tube = new Tube(axis, r);
         return new Body(tube, c, r, 2, p -> Math.abs(radialAndHeight(p, axis)[0] - r), ray -> tubeReference(ray, axis, r));
     }
@@ -356,8 +336,7 @@ class GeometryPropertyTest {
         double size = randomSize(rnd);
         double r = size * (0.3 + 0.7 * rnd.nextDouble());
         double h = size * (0.5 + 2.5 * rnd.nextDouble());
-        double[] a = randomUnit(rnd);
-        Ray axis = new Ray(base, new Vector(a[0], a[1], a[2]));
+        Ray axis = new Ray(base, randomUnit(rnd));
         Cylinder cylinder = new Cylinder(axis, r, h);
         Point3D middle = axis.getPoint(h / 2);
         return new Body(cylinder, middle, Math.max(r, h / 2), 2, p -> {
@@ -442,7 +421,7 @@ class GeometryPropertyTest {
      * @return the ray, or null when its start and the aimed point nearly coincide
      */
     private static Ray randomAimedRay(Random rnd, Body body) {
-        Point3D origin = randomAround(rnd, body.centre(), 3 * body.size());
+        Point3D origin = randomPoint(rnd, body.centre(), 3 * body.size());
         Point3D target = body.aim().apply(rnd);
         return origin.distance(target) < 1e-3 * body.size() ? null : new Ray(origin, target.subtract(origin));
     }
@@ -521,10 +500,10 @@ class GeometryPropertyTest {
                 // leave out directions within about half a degree of the tangent plane: there a start point
                 // rounded off the surface by 1e-14 could meet the surface again at t above the library's 1e-10
                 Vector normal = body.geometry().getNormal(start);
-                double[] d = randomUnit(rnd);
-                while (Math.abs(dot(d, normal)) < 0.01)
+                Vector d = randomUnit(rnd);
+                while (Math.abs(d.dotProduct(normal)) < 0.01)
                     d = randomUnit(rnd);
-                Ray ray = new Ray(start, new Vector(d[0], d[1], d[2]));
+                Ray ray = new Ray(start, d);
                 List<GeoPoint> found = checkRay(body, ray, (0.01 + 8 * rnd.nextDouble()) * size, "TC10");
                 ++rays;
                 if (found != null) {

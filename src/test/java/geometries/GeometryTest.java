@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
-import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.List;
 
@@ -81,7 +81,7 @@ class GeometryTest {
         // TC02: null is rejected and the old colour stays
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> g.setEmission(null),
                 "TC02: null emission must throw");
-        assertTrue(e.getMessage().contains("emission"), "TC02: the message must name the emission: " + e.getMessage());
+        assertMessage(e, "emission", "TC02");
         assertEquals(new Color(10, 20, 30), g.getEmission(), "TC02: a rejected set must not change the emission");
 
         // ===== Boundary Values Tests =====
@@ -108,7 +108,7 @@ class GeometryTest {
         // TC02: null is rejected and the old material stays
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> g.setMaterial(null),
                 "TC02: null material must throw");
-        assertTrue(e.getMessage().contains("material"), "TC02: the message must name the material: " + e.getMessage());
+        assertMessage(e, "material", "TC02");
         assertSame(m, g.getMaterial(), "TC02: a rejected set must not change the material");
 
         // TC03: the setters chain (course style): emission then material on one shape

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
+import static testutil.TestAssertions.assertMessage;
+import static testutil.TestRandom.edgeOrInner;
 
 import java.util.Arrays;
 import java.util.Random;
@@ -106,11 +108,11 @@ class ShadowFrustumTest {
         // TC20: a negative thickness is rejected with a message naming the thickness
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, -1e-9), "TC20: a negative thickness must throw");
-        assertTrue(e.getMessage().contains("thickness"), "TC20: the message must name the thickness: " + e.getMessage());
+        assertMessage(e, "thickness", "TC20");
         // TC21: a thickness that is not a number is rejected too
         e = assertThrows(IllegalArgumentException.class,
                 () -> frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, Double.NaN), "TC21: a NaN thickness must throw");
-        assertTrue(e.getMessage().contains("thickness"), "TC21: the message must name the thickness: " + e.getMessage());
+        assertMessage(e, "thickness", "TC21");
     }
 
     /** Test method for {@link ShadowFrustum#meetsBox(double[], int)}. */
@@ -317,16 +319,6 @@ class ShadowFrustumTest {
         assertFalse(meets(frustum, far), "TC13: the proper pyramid must reject the far box again");
         assertFalse(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC13: the proper pyramid must reject the plane again");
         assertTrue(meets(frustum, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC13: the proper pyramid must meet a box inside it");
-    }
-
-    /**
-     * A random parameter in [−1, 1], a quarter of the time exactly ±1.
-     *
-     * @param rnd the generator
-     * @return the parameter
-     */
-    private static double edgeOrInner(Random rnd) {
-        return rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 1 : -1) : 2 * rnd.nextDouble() - 1;
     }
 
     /**

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.List;
 
@@ -50,27 +51,27 @@ class SphereTest {
         // TC02: negative radius is rejected
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> new Sphere(new Point3D(1, 2, 3), -1), "TC02: negative radius must throw");
-        assertTrue(e.getMessage().contains("radius"), "TC02: message must name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC02");
 
         // TC03: NaN radius is rejected
         e = assertThrows(IllegalArgumentException.class,
                 () -> new Sphere(new Point3D(1, 2, 3), Double.NaN), "TC03: NaN radius must throw");
-        assertTrue(e.getMessage().contains("radius"), "TC03: message must name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC03");
 
         // TC04: infinite radius is rejected
         e = assertThrows(IllegalArgumentException.class,
                 () -> new Sphere(new Point3D(1, 2, 3), Double.POSITIVE_INFINITY), "TC04: infinite radius must throw");
-        assertTrue(e.getMessage().contains("radius"), "TC04: message must name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC04");
 
         // TC05: null centre is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Sphere(null, 1), "TC05: null centre must throw");
-        assertTrue(e.getMessage().contains("center"), "TC05: message must name the centre: " + e.getMessage());
+        assertMessage(e, "center", "TC05");
 
         // ===== Boundary Values Tests =====
         // TC11: zero radius is rejected
         e = assertThrows(IllegalArgumentException.class,
                 () -> new Sphere(new Point3D(1, 2, 3), 0), "TC11: zero radius must throw");
-        assertTrue(e.getMessage().contains("radius"), "TC11: message must name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC11");
     }
 
     /**

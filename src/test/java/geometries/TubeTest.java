@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.List;
 
@@ -36,21 +37,21 @@ class TubeTest {
         // TC02: negative radius is rejected
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new Tube(axis, -1),
                 "TC02: negative radius accepted");
-        assertTrue(e.getMessage().contains("radius"), "TC02: message does not name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC02");
         // TC03: NaN / infinite radius is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Tube(axis, Double.NaN), "TC03: NaN radius accepted");
-        assertTrue(e.getMessage().contains("radius"), "TC03: message does not name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC03");
         e = assertThrows(IllegalArgumentException.class, () -> new Tube(axis, Double.POSITIVE_INFINITY),
                 "TC03: infinite radius accepted");
-        assertTrue(e.getMessage().contains("radius"), "TC03: message does not name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC03");
         // TC04: a null axis is rejected with a message naming it (no bare NullPointerException)
         e = assertThrows(IllegalArgumentException.class, () -> new Tube(null, 1), "TC04: null axis accepted");
-        assertTrue(e.getMessage().contains("axis"), "TC04: message does not name the axis: " + e.getMessage());
+        assertMessage(e, "axis", "TC04");
 
         // ===== Boundary Values Tests =====
         // TC10: zero radius is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Tube(axis, 0), "TC10: zero radius accepted");
-        assertTrue(e.getMessage().contains("radius"), "TC10: message does not name the radius: " + e.getMessage());
+        assertMessage(e, "radius", "TC10");
     }
 
     /**
@@ -225,7 +226,7 @@ class TubeTest {
         // TC12: a non-positive or NaN distance is rejected
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> tube.findGeoIntersections(ray, 0), "TC12: zero distance accepted");
-        assertTrue(e.getMessage().contains("distance"), "TC12: message does not name the distance: " + e.getMessage());
+        assertMessage(e, "distance", "TC12");
         assertThrows(IllegalArgumentException.class, () -> tube.findGeoIntersections(ray, Double.NaN),
                 "TC12: NaN distance accepted");
     }

@@ -1,6 +1,7 @@
 package renderer;
 
 import static org.junit.jupiter.api.Assertions.*;
+import static testutil.TestAssertions.assertMessage;
 
 import java.util.MissingResourceException;
 
@@ -55,29 +56,29 @@ class CameraTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> new Camera(Point3D.ZERO, new Vector(0, 1, -1), new Vector(0, 1, 0)),
                 "TC03: non-orthogonal vTo and vUp accepted");
-        assertTrue(e.getMessage().contains("orthogonal"), "TC03: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "orthogonal", "TC03");
         // TC04: null arguments are rejected with a message naming them (no bare NullPointerException)
         e = assertThrows(IllegalArgumentException.class, () -> new Camera(null, new Vector(0, 0, -1), new Vector(0, 1, 0)),
                 "TC04: null position accepted");
-        assertTrue(e.getMessage().contains("position"), "TC04: message does not name the position: " + e.getMessage());
+        assertMessage(e, "position", "TC04");
         e = assertThrows(IllegalArgumentException.class, () -> new Camera(Point3D.ZERO, null, new Vector(0, 1, 0)),
                 "TC04: null vTo accepted");
-        assertTrue(e.getMessage().contains("vTo"), "TC04: message does not name vTo: " + e.getMessage());
+        assertMessage(e, "vTo", "TC04");
         e = assertThrows(IllegalArgumentException.class, () -> new Camera(Point3D.ZERO, new Vector(0, 0, -1), null),
                 "TC04: null vUp accepted");
-        assertTrue(e.getMessage().contains("vUp"), "TC04: message does not name vUp: " + e.getMessage());
+        assertMessage(e, "vUp", "TC04");
 
         // ===== Boundary Values Tests =====
         // TC10: vTo parallel to vUp is rejected
         e = assertThrows(IllegalArgumentException.class,
                 () -> new Camera(Point3D.ZERO, new Vector(0, 1, 0), new Vector(0, 2, 0)),
                 "TC10: parallel vTo and vUp accepted");
-        assertTrue(e.getMessage().contains("orthogonal"), "TC10: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "orthogonal", "TC10");
         // TC11: vTo almost orthogonal (dot product 1e-3 after normalising) is rejected
         e = assertThrows(IllegalArgumentException.class,
                 () -> new Camera(Point3D.ZERO, new Vector(0, 0.001, -1), new Vector(0, 1, 0)),
                 "TC11: nearly orthogonal vTo and vUp accepted");
-        assertTrue(e.getMessage().contains("orthogonal"), "TC11: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "orthogonal", "TC11");
     }
 
     /**
@@ -97,20 +98,20 @@ class CameraTest {
         // TC02: negative width, height or distance is rejected
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> camera.setVpSize(-1, 3),
                 "TC02: negative width accepted");
-        assertTrue(e.getMessage().contains("width"), "TC02: message does not name the width: " + e.getMessage());
+        assertMessage(e, "width", "TC02");
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpSize(4, -3), "TC02: negative height accepted");
-        assertTrue(e.getMessage().contains("height"), "TC02: message does not name the height: " + e.getMessage());
+        assertMessage(e, "height", "TC02");
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpDistance(-10),
                 "TC02: negative distance accepted");
-        assertTrue(e.getMessage().contains("distance"), "TC02: message does not name the distance: " + e.getMessage());
+        assertMessage(e, "distance", "TC02");
         // TC03: NaN or infinite values are rejected
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpSize(Double.NaN, 3), "TC03: NaN width accepted");
-        assertTrue(e.getMessage().contains("width"), "TC03: message does not name the width: " + e.getMessage());
+        assertMessage(e, "width", "TC03");
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpSize(4, Double.NaN), "TC03: NaN height accepted");
-        assertTrue(e.getMessage().contains("height"), "TC03: message does not name the height: " + e.getMessage());
+        assertMessage(e, "height", "TC03");
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpDistance(Double.NaN),
                 "TC03: NaN distance accepted");
-        assertTrue(e.getMessage().contains("distance"), "TC03: message does not name the distance: " + e.getMessage());
+        assertMessage(e, "distance", "TC03");
         assertThrows(IllegalArgumentException.class, () -> camera.setVpDistance(Double.POSITIVE_INFINITY),
                 "TC03: infinite distance accepted");
         // TC04: a rejected value leaves the earlier settings unchanged (4, 3, 10)
@@ -121,11 +122,11 @@ class CameraTest {
         // ===== Boundary Values Tests =====
         // TC10: zero width, height or distance is rejected
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpSize(0, 3), "TC10: zero width accepted");
-        assertTrue(e.getMessage().contains("width"), "TC10: message does not name the width: " + e.getMessage());
+        assertMessage(e, "width", "TC10");
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpSize(4, 0), "TC10: zero height accepted");
-        assertTrue(e.getMessage().contains("height"), "TC10: message does not name the height: " + e.getMessage());
+        assertMessage(e, "height", "TC10");
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpDistance(0), "TC10: zero distance accepted");
-        assertTrue(e.getMessage().contains("distance"), "TC10: message does not name the distance: " + e.getMessage());
+        assertMessage(e, "distance", "TC10");
     }
 
     /**
@@ -246,27 +247,27 @@ class CameraTest {
         // TC01: negative image sizes are rejected
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> camera.constructRayThroughPixel(-3, 3, 0, 0), "TC01: negative nX accepted");
-        assertTrue(e.getMessage().contains("image size"), "TC01: message does not name the image size: " + e.getMessage());
+        assertMessage(e, "image size", "TC01");
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, -3, 0, 0),
                 "TC01: negative nY accepted");
-        assertTrue(e.getMessage().contains("image size"), "TC01: message does not name the image size: " + e.getMessage());
+        assertMessage(e, "image size", "TC01");
         // TC02: pixels far outside the image are rejected
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, 3, 7, 1),
                 "TC02: column outside the image accepted");
-        assertTrue(e.getMessage().contains("outside"), "TC02: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "outside", "TC02");
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, 3, 1, -5),
                 "TC02: row outside the image accepted");
-        assertTrue(e.getMessage().contains("outside"), "TC02: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "outside", "TC02");
         // TC03: the view plane size was never set → MissingResourceException naming it
         Camera noSize = originCamera().setVpDistance(1);
         MissingResourceException m = assertThrows(MissingResourceException.class,
                 () -> noSize.constructRayThroughPixel(3, 3, 1, 1), "TC03: missing view plane size accepted");
-        assertTrue(m.getMessage().contains("size"), "TC03: message does not name the size: " + m.getMessage());
+        assertMessage(m, "size", "TC03");
         // TC04: the view plane distance was never set → MissingResourceException naming it
         Camera noDistance = originCamera().setVpSize(3, 3);
         m = assertThrows(MissingResourceException.class, () -> noDistance.constructRayThroughPixel(3, 3, 1, 1),
                 "TC04: missing view plane distance accepted");
-        assertTrue(m.getMessage().contains("distance"), "TC04: message does not name the distance: " + m.getMessage());
+        assertMessage(m, "distance", "TC04");
         // TC05: neither was set → MissingResourceException
         assertThrows(MissingResourceException.class, () -> originCamera().constructRayThroughPixel(3, 3, 1, 1),
                 "TC05: missing view plane accepted");
@@ -275,24 +276,24 @@ class CameraTest {
         // TC10: zero image sizes are rejected
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(0, 3, 0, 0),
                 "TC10: zero nX accepted");
-        assertTrue(e.getMessage().contains("image size"), "TC10: message does not name the image size: " + e.getMessage());
+        assertMessage(e, "image size", "TC10");
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, 0, 0, 0),
                 "TC10: zero nY accepted");
-        assertTrue(e.getMessage().contains("image size"), "TC10: message does not name the image size: " + e.getMessage());
+        assertMessage(e, "image size", "TC10");
         // TC11: the first index past the image (j = nX, i = nY) is rejected
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, 3, 3, 0),
                 "TC11: column nX accepted");
-        assertTrue(e.getMessage().contains("outside"), "TC11: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "outside", "TC11");
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, 3, 0, 3),
                 "TC11: row nY accepted");
-        assertTrue(e.getMessage().contains("outside"), "TC11: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "outside", "TC11");
         // TC12: index −1 is rejected
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, 3, -1, 0),
                 "TC12: column −1 accepted");
-        assertTrue(e.getMessage().contains("outside"), "TC12: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "outside", "TC12");
         e = assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, 3, 0, -1),
                 "TC12: row −1 accepted");
-        assertTrue(e.getMessage().contains("outside"), "TC12: message does not name the problem: " + e.getMessage());
+        assertMessage(e, "outside", "TC12");
     }
 
     /**
@@ -311,10 +312,10 @@ class CameraTest {
         // TC03: offsets outside 0..1 or NaN are rejected, naming the offset
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> camera.constructRayThroughPixel(3, 3, 1, 1, 1.5, 0.5), "TC03: offset 1.5 accepted");
-        assertTrue(e.getMessage().contains("offset"), "TC03: message does not name the offset: " + e.getMessage());
+        assertMessage(e, "offset", "TC03");
         e = assertThrows(IllegalArgumentException.class,
                 () -> camera.constructRayThroughPixel(3, 3, 1, 1, 0.5, Double.NaN), "TC03: NaN offset accepted");
-        assertTrue(e.getMessage().contains("offset"), "TC03: message does not name the offset: " + e.getMessage());
+        assertMessage(e, "offset", "TC03");
 
         // ===== Boundary Values Tests =====
         // TC10: offset (0, 0) is the top left corner of the pixel: corner pixel (0,0) → (−1.5, 1.5, −1)
