@@ -149,7 +149,7 @@ public final class SceneWriter {
             PointLight point = (PointLight) light;
             xml.start("point-light").attribute("color", color(point.getIntensity()))
                     .attribute("position", point(point.getPosition()));
-            attenuationAndSquare(xml, point, point.getU(), point.getV());
+            attenuationAndSquare(xml, point);
             xml.empty();
         } else if (type == SpotLight.class) {
             SpotLight spot = (SpotLight) light;
@@ -157,20 +157,18 @@ public final class SceneWriter {
                     .attribute("position", point(spot.getPosition()))
                     .attribute("direction", direction(spot.getDirection()))
                     .attribute("narrow-beam", number(spot.getNarrowBeam()), "1");
-            // a spot light without u and v squares itself around its direction: write them only when set
-            SpotLight unset = new SpotLight(Color.BLACK, spot.getPosition(), spot.getDirection());
-            boolean uvSet = !same(spot.getU(), unset.getU()) || !same(spot.getV(), unset.getV());
-            attenuationAndSquare(xml, spot, uvSet ? spot.getU() : null, uvSet ? spot.getV() : null);
+            attenuationAndSquare(xml, spot);
             xml.empty();
         } else
             throw new IllegalArgumentException("a scene file cannot express the light type " + type.getName());
     }
 
-    private static void attenuationAndSquare(Xml xml, PointLight light, Vector u, Vector v) {
+    /** Writes a light's attenuation and square; its sides only when they were set, not chosen by the light. */
+    private static void attenuationAndSquare(Xml xml, PointLight light) {
         xml.attribute("kC", number(light.getKc()), "1").attribute("kL", number(light.getKl()), "0")
                 .attribute("kQ", number(light.getKq()), "0").attribute("edge", number(light.getEdges()), "0");
-        if (u != null && v != null)
-            xml.attribute("u", direction(u)).attribute("v", direction(v));
+        if (light.isUVSet())
+            xml.attribute("u", direction(light.getU())).attribute("v", direction(light.getV()));
     }
 
     private static void geometries(Xml xml, Geometries geometries) {

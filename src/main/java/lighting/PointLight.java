@@ -97,6 +97,16 @@ public class PointLight extends Light implements AreaLightSource {
         return this;
     }
 
+    /**
+     * Whether the square's sides were set with {@link #setUV}: otherwise the light chooses them
+     * ({@link #getU(Point3D)}, or a spot light's square around its direction).
+     *
+     * @return true when U and V were set
+     */
+    public boolean isUVSet() {
+        return u != null;
+    }
+
     /** @return the light's position */
     public Point3D getPosition() {
         return position;

@@ -409,6 +409,44 @@ class SceneWriterTest {
                 "TC12: wrong zeros");
     }
 
+    /**
+     * Test method for {@link SceneWriter#toXml(Picture)}: a light's u and v are written only when they
+     * were set, never the square a spot light chooses around its direction.
+     */
+    @Test
+    void testLightSquareSides() {
+        Camera camera = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(100, 100)
+                .setVpDistance(100);
+        Random random = new Random(4711);
+        Scene unset = new Scene("unset");
+        for (int k = 0; k < 200; ++k)
+            unset.lights.add(new SpotLight(new Color(1, 1, 1), Point3D.ZERO,
+                    new Vector(random.nextGaussian(), random.nextGaussian(), random.nextGaussian())).setEdgesSize(2));
+        unset.lights.add(new PointLight(new Color(1, 1, 1), Point3D.ZERO).setEdgesSize(2));
+        Scene set = new Scene("set");
+        set.lights.add(new SpotLight(new Color(1, 1, 1), Point3D.ZERO, new Vector(0, 0, -1)).setEdgesSize(2)
+                .setUV(new Vector(0, 1, 0), new Vector(1, 0, 0)));
+        set.lights.add(new PointLight(new Color(1, 1, 1), Point3D.ZERO).setEdgesSize(2)
+                .setUV(new Vector(1, 0, 0), new Vector(0, 0, 1)));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 200 spot lights in random directions and a point light, none with u and v set: no u, no v
+        String xml = SceneWriter.toXml(new Picture("unset", 10, 10, unset, camera));
+        assertFalse(xml.contains(" u=") || xml.contains(" v="), "TC01: a chosen square must not be written:\n" + xml);
+        // TC02: a spot light and a point light with u and v set: both written as set
+        String written = SceneWriter.toXml(new Picture("set", 10, 10, set, camera));
+        assertTrue(written.contains("u=\"0 1 0\" v=\"1 0 0\""), "TC02: the spot light's set square:\n" + written);
+        assertTrue(written.contains("u=\"1 0 0\" v=\"0 0 1\""), "TC02: the point light's set square:\n" + written);
+
+        // ===== Boundary Values Tests =====
+        // TC11: a spot light whose set u and v equal the square it would choose: still written, as set
+        SpotLight chosen = new SpotLight(new Color(1, 1, 1), Point3D.ZERO, new Vector(0, 0, -1)).setEdgesSize(2);
+        Scene same = new Scene("same");
+        same.lights.add(chosen.setUV(chosen.getU(), chosen.getV()));
+        assertTrue(SceneWriter.toXml(new Picture("same", 10, 10, same, camera)).contains(" u="),
+                "TC11: a square set with setUV must be written even when it equals the chosen one");
+    }
+
     /** Test method for {@link SceneWriter#toXml(Picture)} and {@link SceneWriter#write(Picture, Path)}: bad input. */
     @Test
     void testErrors() throws IOException {

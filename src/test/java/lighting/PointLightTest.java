@@ -287,6 +287,24 @@ class PointLightTest {
         assertEquals(Point3D.ZERO, new PointLight(I, Point3D.ZERO).getCenter(), "TC10: wrong centre at the origin");
     }
 
+    /** Test method for {@link PointLight#isUVSet()}: true only after setUV. */
+    @Test
+    void testIsUVSet() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a point light without setUV: false
+        assertFalse(new PointLight(I, POSITION).isUVSet(), "TC01: no U and V were set");
+        // TC02: after setUV: true
+        assertTrue(new PointLight(I, POSITION).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)).isUVSet(),
+                "TC02: U and V were set");
+        // ===== Boundary Values Tests =====
+        // TC11: a spot light without setUV has a square of its own (getU() not null) but none set: false
+        SpotLight spot = new SpotLight(I, POSITION, new Vector(0, 0, -1));
+        assertNotNull(spot.getU(), "TC11: a spot light chooses its U");
+        assertFalse(spot.isUVSet(), "TC11: a chosen square is not a set one");
+        // TC12: the spot light after setUV with the very square it chose: true
+        assertTrue(spot.setUV(spot.getU(), spot.getV()).isUVSet(), "TC12: U and V were set");
+    }
+
     /** Test method for {@link lighting.PointLight#setUV(primitives.Vector, primitives.Vector)}, {@link lighting.PointLight#getU()} and {@link lighting.PointLight#getV()}. */
     @Test
     void testSetUV() {
