@@ -1,13 +1,16 @@
 package app;
 
 import java.io.IOException;
-import java.io.InputStream;
+import java.io.Reader;
+import java.io.StringReader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.NoSuchElementException;
+import java.util.regex.Pattern;
 
 import de.javagl.obj.FloatTuple;
 import de.javagl.obj.Obj;
@@ -31,6 +34,11 @@ import static primitives.Util.requirePositive;
  * fewer than three vertices: real OBJ files contain such faces, and they have no area to render.
  */
 public final class ObjMesh {
+    /** The longest line of an OBJ file, in characters: room for a face of tens of thousands of vertices. */
+    public static final int MAX_LINE_LENGTH = 1 << 20;
+    /** How many characters are read at a time. */
+    private static final int BUFFER_SIZE = 1 << 16;
+
     private ObjMesh() {
     }
 
@@ -73,7 +81,7 @@ public final class ObjMesh {
             int n = face.getNumVertices();
             int[] indices = new int[n];
             for (int k = 0; k < n; ++k)
-                indices[k] = vertexIndex(face, k, f, vertices.length, file);
+                indices[k] = face.getVertexIndex(k); // checked by FaceIndexChecker
             for (int k = 1; k + 1 < n; ++k)
                 addTriangle(triangles, vertices[indices[0]], vertices[indices[k]], vertices[indices[k + 1]]);
         }
@@ -83,12 +91,21 @@ public final class ObjMesh {
         return triangles;
     }
 
-    /** Reads the file with the library, turning every failure into a one-line message naming the file. */
+    /**
+     * Reads the file with the library, after {@link FaceIndexChecker checking its lines and face
+     * indices}; every failure becomes a one-line message naming the file.
+     */
     private static Obj parse(Path file) {
-        try (InputStream in = Files.newInputStream(file)) {
-            return ObjReader.read(in);
+        String text;
+        try {
+            text = checkedText(file);
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException("OBJ file not found: " + file, e);
+        } catch (IOException e) {
+            throw new IllegalArgumentException("bad OBJ file " + file + ": " + reason(e), e);
+        }
+        try {
+            return ObjReader.read(new StringReader(text));
         } catch (IOException | RuntimeException e) {
             throw new IllegalArgumentException("bad OBJ file " + file + ": " + reason(e), e);
         }
@@ -103,8 +120,37 @@ public final class ObjMesh {
             return ("bad number: " + cause.getMessage()).replaceAll("\\R", " ");
         String message = e.getMessage();
         if (message == null || message.isBlank())
-            message = e.getClass().getSimpleName();
+            message = "it cannot be read";
         return message.replaceAll("\\R", " ");
+    }
+
+    /**
+     * The file's text, read with lines of at most {@link #MAX_LINE_LENGTH} characters (so a file
+     * without line breaks, such as /dev/zero, is refused, not read into memory) and every face index
+     * checked.
+     */
+    private static String checkedText(Path file) throws IOException {
+        StringBuilder text = new StringBuilder();
+        StringBuilder line = new StringBuilder();
+        FaceIndexChecker checker = new FaceIndexChecker(file);
+        char[] buffer = new char[BUFFER_SIZE];
+        try (Reader in = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
+            for (int n = in.read(buffer); n >= 0; n = in.read(buffer))
+                for (int k = 0; k < n; ++k) {
+                    if (buffer[k] == '\n') {
+                        checker.accept(line);
+                        text.append(line).append('\n');
+                        line.setLength(0);
+                    } else if (line.length() == MAX_LINE_LENGTH)
+                        throw checker.error("the line is longer than " + MAX_LINE_LENGTH
+                                + " characters (is it an OBJ file?)");
+                    else
+                        line.append(buffer[k]);
+                }
+        }
+        checker.accept(line);
+        checker.finish();
+        return text.append(line).toString();
     }
 
     /** Builds every vertex's point once: position + scale·v. */
@@ -128,17 +174,6 @@ public final class ObjMesh {
         return vertices;
     }
 
-    /** The 0-based index of a face's vertex, checked against the number of vertices. */
-    private static int vertexIndex(ObjFace face, int k, int f, int vertexCount, Path file) {
-        int index = face.getVertexIndex(k);
-        if (index < 0)
-            throw new IllegalArgumentException("bad OBJ file " + file + ": face " + (f + 1)
-                    + " refers to a vertex before the first one (relative index too far back)");
-        if (index >= vertexCount)
-            throw new IllegalArgumentException("bad OBJ file " + file + ": face " + (f + 1)
-                    + " refers to vertex " + (index + 1) + ", but the file has " + vertexCount + " vertices");
-        return index;
-    }
 
     /** Adds the triangle unless it is degenerate (the constructor refuses coincident or collinear vertices). */
     private static void addTriangle(List<Triangle> triangles, Point3D p1, Point3D p2, Point3D p3) {
@@ -146,6 +181,74 @@ public final class ObjMesh {
             triangles.add(new Triangle(p1, p2, p3));
         } catch (IllegalArgumentException degenerate) {
             // skipped on purpose: see the class comment
+        }
+    }
+
+    /**
+     * Checks the face indices of an OBJ file line by line, so that a bad one is reported with its line:
+     * an absolute index (from 1) must name one of the file's vertices, a relative one (negative) one
+     * of the vertices before its line. Indices that are not whole numbers are left to the library.
+     */
+    private static final class FaceIndexChecker {
+        private static final Pattern FACE = Pattern.compile("\\s*f(\\s.*)?");
+        private static final Pattern VERTEX = Pattern.compile("\\s*v(\\s.*)?");
+        private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
+
+        private final Path file;
+        private int lineNumber;
+        private long vertexCount;
+        /** The largest index naming a vertex later in the file than its face, and the line of that face. */
+        private int forwardLine;
+        private long forwardIndex;
+
+        FaceIndexChecker(Path file) {
+            this.file = file;
+        }
+
+        /** Checks the next line. */
+        void accept(CharSequence line) {
+            ++lineNumber;
+            if (VERTEX.matcher(line).matches())
+                ++vertexCount;
+            else if (FACE.matcher(line).matches())
+                for (String item : line.toString().strip().substring(1).strip().split("\\s+"))
+                    check(item.split("/", -1)[0]);
+        }
+
+        private void check(String item) {
+            if (!WHOLE.matcher(item).matches())
+                return;
+            long index;
+            try {
+                index = Long.parseLong(item);
+            } catch (NumberFormatException e) {
+                index = item.startsWith("-") ? Long.MIN_VALUE : Long.MAX_VALUE;
+            }
+            if (index == 0)
+                throw error("a face refers to vertex 0; vertices count from 1 (or back from -1)");
+            if (index > Integer.MAX_VALUE || index < -Integer.MAX_VALUE)
+                throw error("a face refers to vertex " + item + ", beyond any number of vertices");
+            if (index < 0 && -index > vertexCount)
+                throw error("a face refers to a vertex before the first one (relative index " + index
+                        + " too far back)");
+            if (index > vertexCount && index > forwardIndex) {
+                forwardLine = lineNumber;
+                forwardIndex = index;
+            }
+        }
+
+        /** Checks, at the end of the file, that indices naming later vertices name existing ones. */
+        void finish() {
+            if (forwardIndex > vertexCount) {
+                lineNumber = forwardLine;
+                throw error("a face refers to vertex " + forwardIndex + ", but the file has " + vertexCount
+                        + " vertices");
+            }
+        }
+
+        /** A problem at the current line. */
+        IllegalArgumentException error(String problem) {
+            return new IllegalArgumentException("bad OBJ file " + file + ":" + lineNumber + ": " + problem);
         }
     }
 }

@@ -33,8 +33,7 @@ public record Picture(String name, int nX, int nY, Scene scene, Camera camera, i
         requireNonNull(scene, "picture scene");
         requireNonNull(camera, "picture camera");
         requireNonNull(settings, "picture render settings");
-        if (nX <= 0 || nY <= 0)
-            throw new IllegalArgumentException("picture size must be positive, got " + nX + "x" + nY);
+        ImageWriter.requireSize(nX, nY);
         if (gridInterval < 0)
             throw new IllegalArgumentException("grid interval must not be negative, got " + gridInterval);
     }
@@ -102,12 +101,14 @@ public record Picture(String name, int nX, int nY, Scene scene, Camera camera, i
 
     /**
      * Runs a render made by {@link #newRender(Path)}, draws the grid when the picture has one, and
-     * writes the PNG file.
+     * writes the PNG file. Whether the file can be written is checked before rendering.
      *
      * @param render the render, perhaps with more settings (threads, progress) than newRender gave it
      * @return the render, its image still in memory for a look at the pixels
+     * @throws java.io.UncheckedIOException when the PNG file cannot be written
      */
     public Render render(Render render) {
+        render.getImageWriter().checkOutput();
         render.renderImage();
         if (gridInterval > 0)
             render.printGrid(gridInterval, GRID_COLOR);

@@ -1,5 +1,6 @@
 package app;
 
+import renderer.JitteredGrid;
 import renderer.RayTracerBase;
 import renderer.Render;
 
@@ -8,8 +9,8 @@ import renderer.Render;
  *
  * @param softShadows         whether lights with an area cast soft shadows
  * @param adaptiveSoftShadows whether a light's square is sampled adaptively (outline first)
- * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 or more
- * @param antiAliasing        the number of rays along each side of a pixel, 1 or more
+ * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 to 1000
+ * @param antiAliasing        the number of rays along each side of a pixel, 1 to 1000
  * @param seed                the seed of the per-pixel random streams
  */
 public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, int sqrtBeamNum, int antiAliasing,
@@ -20,11 +21,8 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
 
     /** Checks the counts. */
     public RenderSettings {
-        if (sqrtBeamNum < 1)
-            throw new IllegalArgumentException("sqrtBeamNum must be 1 or more, got " + sqrtBeamNum);
-        if (antiAliasing < 1)
-            throw new IllegalArgumentException("anti-aliasing needs 1 or more rays along each side of a pixel, got "
-                    + antiAliasing);
+        JitteredGrid.requireSqrtSamples(sqrtBeamNum, "sqrtBeamNum");
+        JitteredGrid.requireSqrtSamples(antiAliasing, "anti-aliasing (rays along each side of a pixel)");
     }
 
     /**
@@ -44,7 +42,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
     }
 
     /**
-     * @param n the number of cells along each side of a light's square, 1 or more
+     * @param n the number of cells along each side of a light's square, 1 to 1000
      * @return these settings with n × n + 1 shadow rays per light
      */
     public RenderSettings withSqrtBeamNum(int n) {
@@ -52,7 +50,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
     }
 
     /**
-     * @param k the number of rays along each side of a pixel, 1 or more
+     * @param k the number of rays along each side of a pixel, 1 to 1000
      * @return these settings with k × k rays per pixel
      */
     public RenderSettings withAntiAliasing(int k) {

@@ -15,6 +15,12 @@ import primitives.Vector;
  * attributes (defaults filled in by the schema), its children and its place in the file.
  */
 final class SceneElement {
+    /**
+     * The largest magnitude of a number in a scene file: products of a few such numbers (a squared
+     * distance times kQ, a colour times kS) stay finite, so no computation of the render overflows.
+     */
+    static final double MAX_MAGNITUDE = 1e100;
+
     private final Path file;
     private final String name;
     private final Map<String, String> attributes;
@@ -70,9 +76,9 @@ final class SceneElement {
         return attributes.get(attribute);
     }
 
-    /** @return the attribute as a number */
+    /** @return the attribute as a number, at most {@link #MAX_MAGNITUDE} in magnitude */
     double number(String attribute) {
-        return Double.parseDouble(require(attribute));
+        return bounded(Double.parseDouble(require(attribute)), "attribute '" + attribute + "'");
     }
 
     /** @return the attribute as an int */
@@ -91,13 +97,28 @@ final class SceneElement {
         return "true".equals(value) || "1".equals(value);
     }
 
-    /** @return the attribute as a list of numbers */
+    /** @return the attribute as a list of numbers, each at most {@link #MAX_MAGNITUDE} in magnitude */
     double[] numbers(String attribute) {
         String[] items = require(attribute).trim().split("\\s+");
         double[] values = new double[items.length];
         for (int k = 0; k < items.length; ++k)
-            values[k] = Double.parseDouble(items[k]);
+            values[k] = bounded(Double.parseDouble(items[k]), "attribute '" + attribute + "'");
         return values;
+    }
+
+    /**
+     * Checks that a number of this element is at most {@link #MAX_MAGNITUDE} in magnitude.
+     *
+     * @param value the number
+     * @param what  what it is, for the message
+     * @return the number
+     * @throws SceneFileException when it is larger
+     */
+    double bounded(double value, String what) {
+        if (!(Math.abs(value) <= MAX_MAGNITUDE))
+            throw error(what + " is too large (" + value + "): numbers in a scene file must lie between -"
+                    + MAX_MAGNITUDE + " and " + MAX_MAGNITUDE + ", or the render overflows", null);
+        return value;
     }
 
     /** @return the attribute (three numbers) as a point */

@@ -78,7 +78,9 @@ public final class SceneLoader {
         int nX = image == null ? IMAGE_SIZE : image.integer("width");
         int nY = image == null ? IMAGE_SIZE : image.integer("height");
         int grid = image == null ? 0 : image.integer("grid");
-        return new Picture(name, nX, nY, scene, camera(root.child("camera")), grid, settings(root.child("render")));
+        Camera camera = camera(root.child("camera"));
+        RenderSettings settings = settings(root.child("render"));
+        return build(image == null ? root : image, () -> new Picture(name, nX, nY, scene, camera, grid, settings));
     }
 
     private static String baseName(Path file) {
@@ -109,7 +111,8 @@ public final class SceneLoader {
                 ? new SpotLight(light.color("color"), light.point("position"), light.vector("direction"))
                 .setNarrowBeam(light.number("narrow-beam"))
                 : new PointLight(light.color("color"), light.point("position"));
-        point.setKc(light.number("kC")).setKl(light.number("kL")).setKq(light.number("kQ"))
+        // kC last: a light without constant attenuation needs kL or kQ first (all three 0 are refused)
+        point.setKl(light.number("kL")).setKq(light.number("kQ")).setKc(light.number("kC"))
                 .setEdgesSize(light.number("edge"));
         if (light.has("u") != light.has("v"))
             throw light.error("give both u and v, or neither", null);
@@ -163,8 +166,11 @@ public final class SceneLoader {
         List<Triangle> triangles = ObjMesh.read(folder.resolve(mesh.text("file")), mesh.number("scale"),
                 mesh.point("position"));
         Geometries geometries = new Geometries();
-        for (Triangle triangle : triangles)
+        for (Triangle triangle : triangles) {
+            for (Point3D vertex : triangle.getVertices())
+                mesh.bounded(vertex.distance(Point3D.ZERO), "the distance of vertex " + vertex + " from the origin");
             geometries.add(surface(triangle, mesh));
+        }
         return geometries;
     }
 

@@ -1,7 +1,9 @@
 package app;
 
+import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.UnsupportedEncodingException;
 import java.net.URL;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -40,6 +42,11 @@ final class SceneParser {
 
     private static final Schema SCENE_SCHEMA = loadSchema();
 
+    /** The deepest nesting of elements in a scene file. */
+    static final int MAX_DEPTH = 64;
+    /** The longest value (a number, a name) in an attribute, in characters. */
+    static final int MAX_VALUE_LENGTH = 1000;
+
     private static final Pattern CODE = Pattern.compile("^cvc-[\\w.-]+: ");
     private static final Pattern BAD_VALUE = Pattern.compile(
             "The value '(.*)' of attribute '(.*)' on element '(.*)' is not valid with respect to its type, '(.*)'\\.");
@@ -76,7 +83,8 @@ final class SceneParser {
     }
 
     /**
-     * Reads and checks a scene file.
+     * Reads and checks a scene file. A first pass checks the nesting depth and the length of the
+     * attributes' values, so that the schema never sees a file that would take it long to check.
      *
      * @param file the scene file
      * @return its root element
@@ -85,32 +93,65 @@ final class SceneParser {
     static SceneElement parse(Path file) {
         if (Files.isDirectory(file))
             throw new SceneFileException(file, "is a folder, not a scene file", null);
-        try (InputStream in = Files.newInputStream(file)) {
-            InputSource source = new InputSource(in);
-            source.setSystemId(file.toUri().toString());
+        try {
+            read(file, newParser(null), new LimitsChecker());
             TreeBuilder builder = new TreeBuilder(file);
-            newParser().parse(source, builder);
+            read(file, newParser(SCENE_SCHEMA), builder);
             return builder.root;
         } catch (NoSuchFileException e) {
             throw new SceneFileException(file, "no such scene file", e);
         } catch (SAXParseException e) {
-            throw new SceneFileException(file, e.getLineNumber(), e.getColumnNumber(), plain(e.getMessage()), e);
+            int[] place = e.getLineNumber() > 0 ? new int[] {e.getLineNumber(), e.getColumnNumber()} : end(file);
+            throw new SceneFileException(file, place[0], place[1], plain(e.getMessage()), e);
         } catch (SAXException e) {
             throw new SceneFileException(file, "not a scene file: " + e.getMessage(), e);
+        } catch (UnsupportedEncodingException e) {
+            throw new SceneFileException(file, 1, 1, "unknown character encoding '" + e.getMessage()
+                    + "' in the XML declaration", e);
         } catch (IOException e) {
-            throw new SceneFileException(file, "cannot read the scene file: " + e, e);
+            throw new SceneFileException(file, "cannot read the scene file: " + e.getMessage(), e);
         }
     }
 
-    private static SAXParser newParser() throws SAXException {
+    private static void read(Path file, SAXParser parser, DefaultHandler handler) throws IOException, SAXException {
+        try (InputStream in = Files.newInputStream(file)) {
+            InputSource source = new InputSource(in);
+            source.setSystemId(file.toUri().toString());
+            parser.parse(source, handler);
+        }
+    }
+
+    /** The line and column just after the file's last character, where a file cut short ends. */
+    private static int[] end(Path file) {
+        int line = 1;
+        int column = 1;
+        try (InputStream in = new BufferedInputStream(Files.newInputStream(file))) {
+            for (int b = in.read(); b >= 0; b = in.read()) {
+                column = b == '\n' ? 1 : column + 1;
+                line += b == '\n' ? 1 : 0;
+            }
+        } catch (IOException e) {
+            return new int[] {SceneFileException.UNKNOWN, SceneFileException.UNKNOWN};
+        }
+        return new int[] {line, column};
+    }
+
+    /**
+     * A parser of the scene files: secure (no DOCTYPE, no external entities), with English messages
+     * whatever the default locale.
+     *
+     * @param schema the schema it checks the file against, or null for none
+     */
+    private static SAXParser newParser(Schema schema) throws SAXException {
         SAXParserFactory factory = SAXParserFactory.newInstance();
         factory.setNamespaceAware(true);
-        factory.setSchema(SCENE_SCHEMA);
+        factory.setSchema(schema);
         try {
             factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
             factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
             SAXParser parser = factory.newSAXParser();
-            parser.setProperty("http://apache.org/xml/properties/locale", Locale.ENGLISH);
+            // the root locale: the messages' base bundle, English (any other locale falls back to the default one)
+            parser.setProperty("http://apache.org/xml/properties/locale", Locale.ROOT);
             return parser;
         } catch (ParserConfigurationException e) {
             throw new IllegalStateException("no suitable XML parser: " + e.getMessage(), e);
@@ -146,22 +187,55 @@ final class SceneParser {
         return text;
     }
 
+    /** A handler that knows where the parser is in the file. */
+    private abstract static class LocatedHandler extends DefaultHandler {
+        /** The parser's place in the file. */
+        protected Locator locator;
+
+        @Override
+        public void setDocumentLocator(Locator locator) {
+            this.locator = locator;
+        }
+    }
+
+    /**
+     * Checks the sizes the schema is slow or deep on: the nesting of elements (at most
+     * {@link #MAX_DEPTH}) and the length of each value in an attribute (at most {@link #MAX_VALUE_LENGTH}
+     * characters between blanks).
+     */
+    private static final class LimitsChecker extends LocatedHandler {
+        private int depth;
+
+        @Override
+        public void startElement(String uri, String localName, String qName, Attributes attributes)
+                throws SAXException {
+            if (++depth > MAX_DEPTH)
+                throw new SAXParseException("<" + localName + "> is nested too deeply: a scene file nests at most "
+                        + MAX_DEPTH + " elements (fewer <geometries> groups inside each other)", locator);
+            for (int k = 0; k < attributes.getLength(); ++k)
+                for (String value : attributes.getValue(k).split("\\s+"))
+                    if (value.length() > MAX_VALUE_LENGTH)
+                        throw new SAXParseException("a value of attribute '" + attributes.getLocalName(k) + "' of <"
+                                + localName + "> is " + value.length() + " characters long; a number or name in a "
+                                + "scene file has at most " + MAX_VALUE_LENGTH, locator);
+        }
+
+        @Override
+        public void endElement(String uri, String localName, String qName) {
+            --depth;
+        }
+    }
+
     /** Builds the tree of elements; stops at the first problem the validator reports. */
-    private static final class TreeBuilder extends DefaultHandler {
+    private static final class TreeBuilder extends LocatedHandler {
         private final Path file;
         private final Deque<SceneElement> open = new ArrayDeque<>();
-        private Locator locator;
         private SceneElement root;
         /** A value's facet problem, reported again by the next message with the attribute's name. */
         private SAXParseException pendingValueProblem;
 
         TreeBuilder(Path file) {
             this.file = file;
-        }
-
-        @Override
-        public void setDocumentLocator(Locator locator) {
-            this.locator = locator;
         }
 
         @Override

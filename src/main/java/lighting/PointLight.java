@@ -40,9 +40,11 @@ public class PointLight extends Light implements AreaLightSource {
      *
      * @param kC the factor, 0 or more
      * @return this light
+     * @throws IllegalArgumentException when the factor is negative or not finite, or it and the other two
+     *                                  factors would all be 0
      */
     public PointLight setKc(double kC) {
-        this.kC = requireNonNegative(kC, "light kC");
+        this.kC = requireAttenuated(requireNonNegative(kC, "light kC"), kL, kQ);
         return this;
     }
 
@@ -51,9 +53,11 @@ public class PointLight extends Light implements AreaLightSource {
      *
      * @param kL the factor, 0 or more
      * @return this light
+     * @throws IllegalArgumentException when the factor is negative or not finite, or it and the other two
+     *                                  factors would all be 0
      */
     public PointLight setKl(double kL) {
-        this.kL = requireNonNegative(kL, "light kL");
+        this.kL = requireAttenuated(requireNonNegative(kL, "light kL"), kC, kQ);
         return this;
     }
 
@@ -62,10 +66,28 @@ public class PointLight extends Light implements AreaLightSource {
      *
      * @param kQ the factor, 0 or more
      * @return this light
+     * @throws IllegalArgumentException when the factor is negative or not finite, or it and the other two
+     *                                  factors would all be 0
      */
     public PointLight setKq(double kQ) {
-        this.kQ = requireNonNegative(kQ, "light kQ");
+        this.kQ = requireAttenuated(requireNonNegative(kQ, "light kQ"), kC, kL);
         return this;
+    }
+
+    /**
+     * Checks that an attenuation factor and the other two are not all 0: the light would be infinitely
+     * bright at its position. A light without constant attenuation gets kL or kQ first, then kC 0.
+     *
+     * @param factor the new factor
+     * @param other1 one of the other two factors
+     * @param other2 the other one
+     * @return the new factor
+     */
+    private static double requireAttenuated(double factor, double other1, double other2) {
+        if (factor == 0 && other1 == 0 && other2 == 0)
+            throw new IllegalArgumentException("light attenuation kC, kL and kQ must not all be 0 (the light would be"
+                    + " infinitely bright): set kL or kQ before setting kC to 0");
+        return factor;
     }
 
     /**

@@ -9,6 +9,13 @@ import static primitives.Util.requireNonNull;
  * {@link #normalize()}, which normalises the vector itself.
  */
 public class Vector {
+    /** The sine of the angle below which two vectors are parallel. */
+    private static final double PARALLEL_SINE = 1e-10;
+    /** Below this length, normalising divides the components by the largest one first. */
+    private static final double SAFE_LENGTH_MIN = 1e-140;
+    /** Above this length, normalising divides the components by the largest one first. */
+    private static final double SAFE_LENGTH_MAX = 1e140;
+
     double x;
     double y;
     double z;
@@ -19,13 +26,14 @@ public class Vector {
      * @param x the x component
      * @param y the y component
      * @param z the z component
-     * @throws IllegalArgumentException for the zero vector or a NaN or infinite component
+     * @throws IllegalArgumentException for the zero vector (all three components exactly 0) or a NaN or
+     *                                  infinite component
      */
     public Vector(double x, double y, double z) {
         this.x = requireFinite(x, "vector x component");
         this.y = requireFinite(y, "vector y component");
         this.z = requireFinite(z, "vector z component");
-        if (isZero(x) && isZero(y) && isZero(z))
+        if (x == 0 && y == 0 && z == 0)
             throw new IllegalArgumentException("zero vector is not allowed");
     }
 
@@ -91,7 +99,7 @@ public class Vector {
      * @throws IllegalArgumentException when the factor is zero (zero vector) or not finite
      */
     public Vector scale(double scalar) {
-        if (isZero(scalar))
+        if (scalar == 0)
             throw new IllegalArgumentException("scaling by zero gives the zero vector");
         return new Vector(x * scalar, y * scalar, z * scalar);
     }
@@ -109,20 +117,41 @@ public class Vector {
     }
 
     /**
-     * Cross product.
+     * Cross product. The vectors are parallel when the sine of their angle is below 1e-10, whatever
+     * their lengths (the test is made on copies divided by their largest component).
      *
      * @param other the other vector
      * @return the new vector this × other
-     * @throws IllegalArgumentException when the vectors are parallel (zero vector) or the other vector is null
+     * @throws IllegalArgumentException when the vectors are parallel (zero vector), the product overflows,
+     *                                  or the other vector is null
      */
     public Vector crossProduct(Vector other) {
         requireNonNull(other, "other vector");
-        double cx = y * other.z - z * other.y;
-        double cy = z * other.x - x * other.z;
-        double cz = x * other.y - y * other.x;
-        if (isZero(cx) && isZero(cy) && isZero(cz))
+        if (isParallel(other))
             throw new IllegalArgumentException("cross product of parallel vectors is the zero vector");
-        return new Vector(cx, cy, cz);
+        return new Vector(y * other.z - z * other.y, z * other.x - x * other.z, x * other.y - y * other.x);
+    }
+
+    /** Whether the sine of the angle between the vectors is below {@link #PARALLEL_SINE}. */
+    private boolean isParallel(Vector other) {
+        double m = maxAbs();
+        double ax = x / m;
+        double ay = y / m;
+        double az = z / m;
+        double n = other.maxAbs();
+        double bx = other.x / n;
+        double by = other.y / n;
+        double bz = other.z / n;
+        double cx = ay * bz - az * by;
+        double cy = az * bx - ax * bz;
+        double cz = ax * by - ay * bx;
+        double sine2 = PARALLEL_SINE * PARALLEL_SINE;
+        return cx * cx + cy * cy + cz * cz <= sine2 * (ax * ax + ay * ay + az * az) * (bx * bx + by * by + bz * bz);
+    }
+
+    /** @return the largest magnitude of the components, positive for any vector */
+    private double maxAbs() {
+        return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
 
     /**
@@ -159,12 +188,21 @@ public class Vector {
     }
 
     /**
-     * Normalises this vector in place: the one operation that changes a vector.
+     * Normalises this vector in place: the one operation that changes a vector. A very long or very
+     * short vector is first divided by its largest component, so its square cannot overflow or
+     * vanish: the result is always a unit vector.
      *
      * @return this vector, now of unit length
      */
     public Vector normalize() {
         double length = length();
+        if (!(length > SAFE_LENGTH_MIN && length < SAFE_LENGTH_MAX)) {
+            double m = maxAbs();
+            x /= m;
+            y /= m;
+            z /= m;
+            length = length();
+        }
         x /= length;
         y /= length;
         z /= length;
@@ -173,8 +211,7 @@ public class Vector {
 
     /** @return a new unit vector in the direction of this one */
     public Vector normalized() {
-        double length = length();
-        return new Vector(x / length, y / length, z / length);
+        return new Vector(x, y, z).normalize();
     }
 
     /**

@@ -3,8 +3,13 @@ package renderer;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.concurrent.atomic.AtomicLong;
 
 import javax.imageio.ImageIO;
 
@@ -14,13 +19,20 @@ import static primitives.Util.requireNonNull;
 
 /**
  * An image of {@code nX × nY} pixels that is written as a PNG file, by default to
- * {@code images/<imageName>.png}. The folder is created when it does not exist.
+ * {@code images/<imageName>.png}. The folder is created when it does not exist. The file is written
+ * atomically: the PNG goes to a temporary file in the same folder, renamed over the old picture only
+ * once complete, so an interrupted write leaves the old picture or the new one, never half of one.
  */
 public class ImageWriter {
     /** The folder images go to unless another is given. */
     public static final Path DEFAULT_FOLDER = Path.of("images");
     /** The extension of the files images are written to. */
     public static final String EXTENSION = ".png";
+    /** The most pixels an image can hold: the longest array of ints. */
+    public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
+
+    /** Numbers the temporary files of this process, so that two writes never share one. */
+    private static final AtomicLong TEMPORARY_COUNT = new AtomicLong();
 
     private final String imageName;
     private final Path folder;
@@ -34,6 +46,8 @@ public class ImageWriter {
      * @param imageName the file name, without extension
      * @param nX        the number of columns, positive
      * @param nY        the number of rows, positive
+     * @throws IllegalArgumentException when the name is blank or null, or the size is not positive or has
+     *                                  more than {@link #MAX_PIXELS} pixels
      */
     public ImageWriter(String imageName, int nX, int nY) {
         this(imageName, nX, nY, DEFAULT_FOLDER);
@@ -46,17 +60,33 @@ public class ImageWriter {
      * @param nX        the number of columns, positive
      * @param nY        the number of rows, positive
      * @param folder    the folder to write to (created when missing)
+     * @throws IllegalArgumentException when the name is blank, an argument is null, or the size is not
+     *                                  positive or has more than {@link #MAX_PIXELS} pixels
      */
     public ImageWriter(String imageName, int nX, int nY, Path folder) {
         this.imageName = requireNonNull(imageName, "image name");
         if (imageName.isBlank())
             throw new IllegalArgumentException("image name must not be blank");
         this.folder = requireNonNull(folder, "image folder");
-        if (nX <= 0 || nY <= 0)
-            throw new IllegalArgumentException("image size must be positive, got " + nX + "x" + nY);
+        requireSize(nX, nY);
         this.nX = nX;
         this.nY = nY;
         this.image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
+    }
+
+    /**
+     * Checks the size of an image: both sides positive, and no more than {@link #MAX_PIXELS} pixels.
+     *
+     * @param nX the number of columns
+     * @param nY the number of rows
+     * @throws IllegalArgumentException when the size is not positive or too large
+     */
+    public static void requireSize(int nX, int nY) {
+        if (nX <= 0 || nY <= 0)
+            throw new IllegalArgumentException("image size must be positive, got " + nX + "x" + nY);
+        if ((long) nX * nY > MAX_PIXELS)
+            throw new IllegalArgumentException("image size " + nX + "x" + nY + " is too large: an image holds at most "
+                    + MAX_PIXELS + " pixels");
     }
 
     /** @return the number of columns */
@@ -106,7 +136,25 @@ public class ImageWriter {
     }
 
     /**
-     * Writes the image as a PNG file, creating the folder when it does not exist.
+     * Checks, before any rendering, that the image can be written: creates its folder when missing,
+     * and checks that a file can be made there and that the image's path is not a folder.
+     *
+     * @throws UncheckedIOException when the image cannot be written there
+     */
+    public void checkOutput() {
+        Path path = getPath();
+        try {
+            Files.createDirectories(folder);
+            requireNotFolder(path);
+            Files.delete(Files.createFile(temporaryPath()));
+        } catch (IOException e) {
+            throw cannotWrite(path, e);
+        }
+    }
+
+    /**
+     * Writes the image as a PNG file, creating the folder when it does not exist: to a temporary file
+     * in the folder first, then renamed over the old file in one step.
      *
      * @throws UncheckedIOException when the file cannot be written
      */
@@ -114,10 +162,42 @@ public class ImageWriter {
         Path path = getPath();
         try {
             Files.createDirectories(folder);
-            if (!ImageIO.write(image, "png", path.toFile()))
-                throw new IOException("no PNG writer available");
+            requireNotFolder(path);
+            Path temporary = temporaryPath();
+            try {
+                if (!ImageIO.write(image, "png", temporary.toFile()))
+                    throw new IOException("no PNG writer available");
+                Files.move(temporary, path, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } finally {
+                Files.deleteIfExists(temporary);
+            }
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write image " + path + ": " + e.getMessage(), e);
+            throw cannotWrite(path, e);
         }
+    }
+
+    private static void requireNotFolder(Path path) throws IOException {
+        if (Files.isDirectory(path))
+            throw new IOException("it is a folder");
+    }
+
+    /** A new temporary file name beside the image, hidden and unique to this write. */
+    private Path temporaryPath() {
+        return folder.resolve("." + imageName + EXTENSION + "." + ProcessHandle.current().pid() + "-"
+                + TEMPORARY_COUNT.incrementAndGet() + ".tmp");
+    }
+
+    /** The failure to write an image, in the user's terms: what is in the way, not the exception's class. */
+    private static UncheckedIOException cannotWrite(Path path, IOException e) {
+        String reason;
+        if (e instanceof AccessDeniedException)
+            reason = "permission denied";
+        else if (e instanceof FileAlreadyExistsException)
+            reason = e.getMessage() + " is a file, not a folder";
+        else if (e instanceof FileSystemException f && f.getReason() != null)
+            reason = f.getReason();
+        else
+            reason = e.getMessage();
+        return new UncheckedIOException("cannot write image " + path + ": " + reason, e);
     }
 }

@@ -15,6 +15,12 @@ import static primitives.Util.requireNonNull;
  * sample the rest.
  */
 public final class JitteredGrid {
+    /**
+     * The largest k: a million cells, so that the grid and its points stay small in memory
+     * (k² must not overflow an int either).
+     */
+    public static final int MAX_SQRT_SAMPLES = 1000;
+
     private final int sqrtSamples;
     private final int outlineCount;
     /** The column and row of every cell, in visiting order: cells[2c], cells[2c + 1]. */
@@ -28,13 +34,11 @@ public final class JitteredGrid {
     /**
      * Creates a grid of k × k cells.
      *
-     * @param sqrtSamples k, the number of cells along each side, 1 or more
-     * @throws IllegalArgumentException when k is less than 1
+     * @param sqrtSamples k, the number of cells along each side, 1 to {@link #MAX_SQRT_SAMPLES}
+     * @throws IllegalArgumentException when k is less than 1 or more than {@link #MAX_SQRT_SAMPLES}
      */
     public JitteredGrid(int sqrtSamples) {
-        if (sqrtSamples < 1)
-            throw new IllegalArgumentException("the square root of the number of samples must be 1 or more, got "
-                    + sqrtSamples);
+        requireSqrtSamples(sqrtSamples, "the square root of the number of samples");
         this.sqrtSamples = sqrtSamples;
         this.outlineCount = sqrtSamples == 1 ? 1 : 4 * (sqrtSamples - 1);
         this.cells = new int[2 * sqrtSamples * sqrtSamples];
@@ -49,6 +53,21 @@ public final class JitteredGrid {
         for (int row = 1; row < sqrtSamples - 1; ++row)
             for (int column = 1; column < sqrtSamples - 1; ++column)
                 c = visit(c, column, row);
+    }
+
+    /**
+     * Checks a number of cells along each side of a grid.
+     *
+     * @param sqrtSamples the number, k
+     * @param what        what the number is, for the message
+     * @return the number
+     * @throws IllegalArgumentException when k is less than 1 or more than {@link #MAX_SQRT_SAMPLES}
+     */
+    public static int requireSqrtSamples(int sqrtSamples, String what) {
+        if (sqrtSamples < 1 || sqrtSamples > MAX_SQRT_SAMPLES)
+            throw new IllegalArgumentException(what + " must be between 1 and " + MAX_SQRT_SAMPLES + ", got "
+                    + sqrtSamples);
+        return sqrtSamples;
     }
 
     /** Lists the border cells going round the grid: top row, right column, bottom row, left column. */

@@ -58,13 +58,14 @@ public abstract class RayTracerBase {
      * Sets the number of shadow rays per light for soft shadows: sqrtBeamNum² rays to the light's
      * square, plus one to its centre.
      *
-     * @param sqrtBeamNum the number of cells along each side of the light's square, 1 or more
+     * @param sqrtBeamNum the number of cells along each side of the light's square, 1 to
+     *                    {@link JitteredGrid#MAX_SQRT_SAMPLES}
      * @return this ray tracer
-     * @throws IllegalArgumentException when sqrtBeamNum is less than 1
+     * @throws IllegalArgumentException when sqrtBeamNum is less than 1 or more than
+     *                                  {@link JitteredGrid#MAX_SQRT_SAMPLES}
      */
     public RayTracerBase setSqrtBeamNum(int sqrtBeamNum) {
-        if (sqrtBeamNum < 1)
-            throw new IllegalArgumentException("sqrtBeamNum must be 1 or more, got " + sqrtBeamNum);
+        JitteredGrid.requireSqrtSamples(sqrtBeamNum, "sqrtBeamNum");
         this.beamGrid = new JitteredGrid(sqrtBeamNum);
         return this;
     }

@@ -88,7 +88,7 @@ public class Render {
     /**
      * Sets the number of shadow rays per light in the ray tracer.
      *
-     * @param sqrtBeamNum the number of cells along each side of a light's square, 1 or more
+     * @param sqrtBeamNum the number of cells along each side of a light's square, 1 to {@link JitteredGrid#MAX_SQRT_SAMPLES}
      * @return this render
      * @throws MissingResourceException when the ray tracer is not set yet
      * @see RayTracerBase#setSqrtBeamNum(int)
@@ -128,14 +128,13 @@ public class Render {
      * Sets anti-aliasing: each pixel's colour is the average of k × k rays through jittered points
      * of the pixel, one in each cell of a k × k grid.
      *
-     * @param sqrtSamples k, 1 or more; 1 (the default) is one ray through the pixel's centre
+     * @param sqrtSamples k, 1 to {@link JitteredGrid#MAX_SQRT_SAMPLES}; 1 (the default) is one ray
+     *                    through the pixel's centre
      * @return this render
-     * @throws IllegalArgumentException when k is less than 1
+     * @throws IllegalArgumentException when k is less than 1 or more than {@link JitteredGrid#MAX_SQRT_SAMPLES}
      */
     public Render setAntiAliasing(int sqrtSamples) {
-        if (sqrtSamples < 1)
-            throw new IllegalArgumentException("anti-aliasing needs 1 or more rays along each side of a pixel, got "
-                    + sqrtSamples);
+        JitteredGrid.requireSqrtSamples(sqrtSamples, "anti-aliasing (rays along each side of a pixel)");
         this.pixelGrid = sqrtSamples == 1 ? null : new JitteredGrid(sqrtSamples);
         return this;
     }
@@ -244,7 +243,8 @@ public class Render {
         private final AtomicInteger nextTile = new AtomicInteger();
         /** The pixels rendered so far: what the progress listener is told and the debug print shows. */
         private final AtomicLong pixelsDone = new AtomicLong();
-        private volatile RuntimeException failure;
+        /** The first failure of a thread (an exception, or an error such as running out of memory). */
+        private volatile Throwable failure;
 
         void run() {
             int threads = Math.min(threadsCount, tilesCount);
@@ -261,8 +261,10 @@ public class Render {
                 joinAll(printer);
                 System.out.println("\r100%");
             }
-            if (failure != null)
-                throw failure;
+            if (failure instanceof RuntimeException e)
+                throw e;
+            if (failure instanceof Error e)
+                throw e;
         }
 
         private Thread startProgressPrinter() {
@@ -280,7 +282,7 @@ public class Render {
                     if (progressListener != null)
                         progressListener.accept(done);
                 }
-            } catch (RuntimeException e) {
+            } catch (RuntimeException | OutOfMemoryError | StackOverflowError e) { // rethrown by the calling thread
                 failure = e;
             }
         }

@@ -62,10 +62,10 @@ class PointLightTest {
         assertColor(300 / 9.75, 150 / 9.75, 60 / 9.75, light.getIntensity(new Point3D(4, 6, 3)),
                 "TC04: wrong intensity at d 5");
         // TC05: linear only (kC 0, kL 1) at d 5: I / 5 = (60, 30, 12)
-        assertColor(60, 30, 12, new PointLight(I, POSITION).setKc(0).setKl(1).getIntensity(new Point3D(4, 6, 3)),
+        assertColor(60, 30, 12, new PointLight(I, POSITION).setKl(1).setKc(0).getIntensity(new Point3D(4, 6, 3)),
                 "TC05: wrong linear attenuation");
         // TC06: quadratic only (kC 0, kQ 1) at d 10: I / 100 = (3, 1.5, 0.6)
-        assertColor(3, 1.5, 0.6, new PointLight(I, POSITION).setKc(0).setKq(1).getIntensity(new Point3D(1, 12, 3)),
+        assertColor(3, 1.5, 0.6, new PointLight(I, POSITION).setKq(1).setKc(0).getIntensity(new Point3D(1, 12, 3)),
                 "TC06: wrong quadratic attenuation");
         // TC07: constant only (kC 2) at any distance: I / 2 = (150, 75, 30)
         PointLight constant = new PointLight(I, POSITION).setKc(2);
@@ -80,10 +80,9 @@ class PointLightTest {
             assertTrue(red < previous, "TC08: intensity must fall with distance, at d " + d);
             previous = red;
         }
-        // TC09: all attenuation factors 0 is rejected, the message names the "attenuation"
-        PointLight dark = new PointLight(I, POSITION).setKc(0);
+        // TC09: all attenuation factors 0 is rejected by the setter, the message names the "attenuation"
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> dark.getIntensity(new Point3D(4, 6, 3)), "TC09: all-zero attenuation must be rejected");
+                () -> new PointLight(I, POSITION).setKc(0), "TC09: all-zero attenuation must be rejected");
         assertMessage(e, "attenuation", "TC09");
         // TC10: a null point is rejected, the message names the "point"
         e = assertThrows(IllegalArgumentException.class, () -> light.getIntensity(null),
@@ -94,7 +93,7 @@ class PointLightTest {
         // TC11: at the light's own position (d 0) only kC counts: I / 1 = (300, 150, 60)
         assertColor(300, 150, 60, light.getIntensity(POSITION), "TC11: wrong intensity at d 0");
         // TC12: kC 0 at the light's own position makes the attenuation 0: rejected, naming the "attenuation"
-        PointLight noConstant = new PointLight(I, POSITION).setKc(0).setKl(1);
+        PointLight noConstant = new PointLight(I, POSITION).setKl(1).setKc(0);
         e = assertThrows(IllegalArgumentException.class, () -> noConstant.getIntensity(POSITION),
                 "TC12: zero attenuation at d 0 must be rejected");
         assertMessage(e, "attenuation", "TC12");
@@ -170,8 +169,8 @@ class PointLightTest {
         assertEquals(2, light.getKc(), 0, "TC02: a rejected kC must leave kC 2");
 
         // ===== Boundary Values Tests =====
-        // TC10: kC 0 is accepted
-        assertEquals(0, light.setKc(0).getKc(), 0, "TC10: kC 0 must be accepted");
+        // TC10: kC 0 is accepted when kL is not 0
+        assertEquals(0, light.setKl(1).setKc(0).getKc(), 0, "TC10: kC 0 must be accepted");
         // TC11: kC -1e-12 is rejected, the message names "kC"
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> light.setKc(-1e-12),
                 "TC11: kC -1e-12 must be rejected");

@@ -49,10 +49,9 @@ class VectorTest {
         e = assertThrows(IllegalArgumentException.class, () -> new Vector(0, 0, 0),
                 "TC10: zero vector must be rejected");
         assertMessage(e, "zero vector", "TC10");
-        // TC11: a vector within the tolerance of zero is rejected
-        e = assertThrows(IllegalArgumentException.class, () -> new Vector(5e-11, -5e-11, 0),
-                "TC11: nearly-zero vector must be rejected");
-        assertMessage(e, "zero vector", "TC11");
+        // TC11: a tiny vector is not zero: only exactly zero is refused (5e-11, -5e-11, 0) and (0, 1e-200, 0)
+        assertComponents(5e-11, -5e-11, 0, new Vector(5e-11, -5e-11, 0), "TC11: a tiny vector must be accepted");
+        assertComponents(0, 1e-200, 0, new Vector(0, 1e-200, 0), "TC11: a tiny vector must be accepted");
         // TC12: a single non-zero component is enough (0, 0, 1e-9)
         assertComponents(0, 0, 1e-9, new Vector(0, 0, 1e-9), "TC12: wrong components");
     }
@@ -258,6 +257,16 @@ class VectorTest {
                 () -> new Vector(0, 0, 1).crossProduct(new Vector(0, 0, -3)),
                 "TC13: cross product of anti-parallel axis vectors must be rejected");
         assertMessage(e, "parallel", "TC13");
+        // TC14: short vectors at a right angle are not parallel, whatever their length: (1e-9,0,0)×(0,1e-9,0)
+        assertComponents(0, 0, 1e-18, new Vector(1e-9, 0, 0).crossProduct(new Vector(0, 1e-9, 0)),
+                "TC14: wrong cross product of short vectors");
+        assertEquals(1e-18, new Vector(1e-9, 0, 0).crossProduct(new Vector(0, 1e-9, 0)).getZ(), 1e-30,
+                "TC14: wrong cross product of short vectors");
+        // TC15: long parallel vectors (1e200·(1,2,3) and 2e200·(1,2,3)) are rejected as parallel
+        e = assertThrows(IllegalArgumentException.class,
+                () -> new Vector(1e200, 2e200, 3e200).crossProduct(new Vector(2e200, 4e200, 6e200)),
+                "TC15: cross product of long parallel vectors must be rejected");
+        assertMessage(e, "parallel", "TC15");
     }
 
     /** Test method for {@link primitives.Vector#lengthSquared()}. */
@@ -312,6 +321,14 @@ class VectorTest {
         Vector unit = new Vector(0, -1, 0);
         assertSame(unit, unit.normalize(), "TC10: normalize must return the vector itself");
         assertComponents(0, -1, 0, unit, "TC10: a unit vector must not change");
+        // TC11: a very long vector (1e200, 1e200, 0), whose square overflows, becomes (√½, √½, 0), not zero
+        double half = Math.sqrt(0.5);
+        assertEquals(new Vector(half, half, 0), new Vector(1e200, 1e200, 0).normalize(), "TC11: wrong long unit vector");
+        // TC12: a very short vector (0, 1e-200, 0), whose square vanishes, becomes (0, 1, 0)
+        assertComponents(0, 1, 0, new Vector(0, 1e-200, 0).normalize(), "TC12: wrong short unit vector");
+        // TC13: the smallest double (Double.MIN_VALUE, 0, -Double.MIN_VALUE) becomes (√½, 0, -√½)
+        assertEquals(new Vector(half, 0, -half), new Vector(Double.MIN_VALUE, 0, -Double.MIN_VALUE).normalize(),
+                "TC13: wrong unit vector of the smallest components");
     }
 
     /** Test method for {@link primitives.Vector#normalized()}. */

@@ -83,6 +83,13 @@ class ImageWriterTest {
         ImageWriter tiny = new ImageWriter("tiny", 1, 1);
         assertEquals(1, tiny.getNx(), "TC11: wrong nX");
         assertEquals(1, tiny.getNy(), "TC11: wrong nY");
+        // TC12: sizes whose pixel count an image cannot hold are rejected before any memory is taken:
+        // 100000×100000 and Integer.MAX_VALUE×2, the message names the largest pixel count
+        for (int[] size : new int[][] { { 100_000, 100_000 }, { Integer.MAX_VALUE, 2 } }) {
+            e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("huge", size[0], size[1]),
+                    "TC12: " + size[0] + "x" + size[1] + " must be rejected");
+            assertMessage(e, "at most " + ImageWriter.MAX_PIXELS + " pixels", "TC12");
+        }
     }
 
     /** Test method for {@link renderer.ImageWriter#getPath()}. */
@@ -206,6 +213,66 @@ class ImageWriterTest {
             assertMessage(e, "blocked.png", "TC01");
         } finally {
             deleteAll(blocker);
+        }
+    }
+
+    /** Test method for {@link renderer.ImageWriter#writeToImage()}: the file is replaced in one step. */
+    @Test
+    void testWriteToImageAtomic() throws IOException {
+        Path folder = uniqueFolder("atomic");
+        ImageWriter writer = new ImageWriter("picture", 3, 2, folder);
+        Path file = writer.getPath();
+        try {
+            // ===== Equivalence Partitions Tests =====
+            // TC01: an old file is replaced by the complete new PNG, and no temporary file is left behind
+            Files.createDirectories(folder);
+            Files.writeString(file, "the old picture");
+            writer.writeToImage();
+            assertEquals(3, ImageIO.read(file.toFile()).getWidth(), "TC01: the new picture must replace the old one");
+            try (var files = Files.list(folder)) {
+                assertEquals(1, files.count(), "TC01: a temporary file was left in the folder");
+            }
+
+            // ===== Boundary Values Tests =====
+            // TC11: an empty folder with the image's name is not replaced: the write fails, the folder stays
+            Files.delete(file);
+            Files.createDirectory(file);
+            UncheckedIOException e = assertThrows(UncheckedIOException.class, writer::writeToImage,
+                    "TC11: writing onto a folder must fail");
+            assertMessage(e, "is a folder", "TC11");
+            assertTrue(Files.isDirectory(file), "TC11: the folder must stay");
+        } finally {
+            deleteAll(file, folder);
+        }
+    }
+
+    /** Test method for {@link renderer.ImageWriter#checkOutput()}: the path is checked before rendering. */
+    @Test
+    void testCheckOutput() throws IOException {
+        Path folder = uniqueFolder("check");
+        Path blocker = folder.resolve("file");
+        ImageWriter writer = new ImageWriter("picture", 2, 2, folder.resolve("sub"));
+        try {
+            // ===== Equivalence Partitions Tests =====
+            // TC01: a missing folder is created, and nothing is left in it
+            writer.checkOutput();
+            try (var files = Files.list(folder.resolve("sub"))) {
+                assertEquals(0, files.count(), "TC01: the check must leave the folder empty");
+            }
+            // TC02: an existing folder named like the image: rejected, naming the folder
+            Files.createDirectory(writer.getPath());
+            UncheckedIOException e = assertThrows(UncheckedIOException.class, writer::checkOutput,
+                    "TC02: an image path that is a folder must be rejected");
+            assertMessage(e, "is a folder", "TC02");
+            Files.delete(writer.getPath());
+            // TC03: a folder whose parent is a file: rejected, naming the image
+            Files.writeString(blocker, "not a folder");
+            e = assertThrows(UncheckedIOException.class,
+                    () -> new ImageWriter("picture", 2, 2, blocker.resolve("sub")).checkOutput(),
+                    "TC03: a folder below a file must be rejected");
+            assertMessage(e, "cannot write image " + blocker.resolve("sub").resolve("picture.png"), "TC03");
+        } finally {
+            deleteAll(blocker, folder.resolve("sub"), folder);
         }
     }
 }

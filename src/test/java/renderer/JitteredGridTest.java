@@ -124,9 +124,18 @@ class JitteredGridTest {
         // ===== Boundary Values Tests =====
         // TC11: k = 0 is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new JitteredGrid(0), "TC11: k = 0 must be rejected");
-        assertMessage(e, "1 or more", "TC11");
+        assertMessage(e, "between 1 and 1000", "TC11");
         // TC12: k = 1 is accepted: a single cell
         assertEquals(1, new JitteredGrid(1).getSqrtSamples(), "TC12: k = 1 must be accepted");
+        // TC13: k = 1000, the largest, is accepted: a million cells
+        assertEquals(1_000_000, new JitteredGrid(JitteredGrid.MAX_SQRT_SAMPLES).getSamplesCount(),
+                "TC13: k = 1000 must be accepted");
+        // TC14: k = 1001, 46341 (k² overflows an int) and 1000000 are rejected, naming the bound
+        for (int k : new int[] { 1001, 46_341, 1_000_000, Integer.MAX_VALUE }) {
+            e = assertThrows(IllegalArgumentException.class, () -> new JitteredGrid(k), "TC14: k = " + k
+                    + " must be rejected");
+            assertMessage(e, "between 1 and 1000", "TC14");
+        }
     }
 
     /**

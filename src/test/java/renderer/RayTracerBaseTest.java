@@ -80,6 +80,11 @@ class RayTracerBaseTest {
         assertSame(tracer, tracer.setSqrtBeamNum(1), "TC12: setSqrtBeamNum(1) must return the same ray tracer");
         assertEquals(1, tracer.getSqrtBeamNum(), "TC12: sqrtBeamNum must be 1");
         assertEquals(1, tracer.getBeamGrid().getSamplesCount(), "TC12: the beam grid must have 1 cell");
+        // TC13: sqrtBeamNum 46341 (whose square overflows an int) is rejected, naming the bound 1000
+        e = assertThrows(IllegalArgumentException.class, () -> tracer.setSqrtBeamNum(46_341),
+                "TC13: sqrtBeamNum 46341 must be rejected");
+        assertMessage(e, "sqrtBeamNum must be between 1 and 1000", "TC13");
+        assertEquals(1, tracer.getSqrtBeamNum(), "TC13: a rejected sqrtBeamNum must leave 1");
     }
 
     /**

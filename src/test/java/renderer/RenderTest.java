@@ -421,6 +421,11 @@ class RenderTest {
         // TC12: k = 1 is accepted and turns anti-aliasing off again
         assertSame(render, render.setAntiAliasing(1), "TC12: setAntiAliasing(1) must return the render");
         assertEquals(1, render.getAntiAliasing(), "TC12: anti-aliasing must be 1 again");
+        // TC13: k = 46341 (k² overflows an int) is rejected, naming the bound 1000, and leaves 1
+        e = assertThrows(IllegalArgumentException.class, () -> render.setAntiAliasing(46_341),
+                "TC13: anti-aliasing 46341 must be rejected");
+        assertMessage(e, "between 1 and 1000", "TC13");
+        assertEquals(1, render.getAntiAliasing(), "TC13: a rejected anti-aliasing must leave 1");
     }
 
     /** Test method for {@link Render#setAntiAliasing(int)}: k² rays per pixel smooth the silhouette only. */
