@@ -35,8 +35,8 @@ public final class Main {
      * @param out      where the command's results and help go
      * @param err      where its progress bar and error messages go
      * @param terminal true when the error stream is a terminal (the progress bar redraws its line)
-     * @return the exit code: 0 on success, 1 when the image cannot be written, 2 on bad arguments or a
-     * bad scene file
+     * @return the exit code: 0 on success, 2 on bad arguments, a bad scene file or an image that cannot be
+     * written
      */
     static int run(String[] args, PrintWriter out, PrintWriter err, boolean terminal) {
         return RenderCommand.newCommandLine(terminal).setOut(out).setErr(err).execute(args);

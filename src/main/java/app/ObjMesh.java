@@ -195,7 +195,8 @@ public final class ObjMesh {
         private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
 
         private final Path file;
-        private int lineNumber;
+        /** The line being read, from 1. */
+        private int lineNumber = 1;
         private long vertexCount;
         /** The largest index naming a vertex later in the file than its face, and the line of that face. */
         private int forwardLine;
@@ -207,12 +208,12 @@ public final class ObjMesh {
 
         /** Checks the next line. */
         void accept(CharSequence line) {
-            ++lineNumber;
             if (VERTEX.matcher(line).matches())
                 ++vertexCount;
             else if (FACE.matcher(line).matches())
                 for (String item : line.toString().strip().substring(1).strip().split("\\s+"))
                     check(item.split("/", -1)[0]);
+            ++lineNumber;
         }
 
         private void check(String item) {
@@ -246,7 +247,7 @@ public final class ObjMesh {
             }
         }
 
-        /** A problem at the current line. */
+        /** A problem at the line being read. */
         IllegalArgumentException error(String problem) {
             return new IllegalArgumentException("bad OBJ file " + file + ":" + lineNumber + ": " + problem);
         }

@@ -1,6 +1,7 @@
 package app;
 
 import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
@@ -20,29 +21,30 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import renderer.ImageWriter;
+import renderer.JitteredGrid;
 import renderer.RayTracerBase;
 import renderer.Render;
 
 /**
  * The {@code render} command: renders a scene file to a PNG image, with a progress bar on the error
  * stream, and prints the elapsed time and the ray counts. Options that are not given keep the scene
- * file's settings. Exit codes: 0 on success, 1 when the image cannot be written, 2 on bad arguments or a
- * bad scene file.
+ * file's settings. Exit codes: 0 on success, 2 for anything that stops the picture (a bad argument, a
+ * bad scene file, an image that cannot be written, not enough memory), with one line on the error
+ * stream and never a stack trace. The output path is checked before rendering starts.
  */
 @Command(name = "render", mixinStandardHelpOptions = true, version = "render (ray tracer) 1.0",
         sortOptions = false, usageHelpAutoWidth = true,
         description = "Renders a scene file (XML, see the README) to a PNG image.",
         footerHeading = "%nExit codes:%n",
         footer = {"  0  the image is written",
-                "  1  the image cannot be written",
-                "  2  bad arguments or a bad scene file"})
+                "  2  bad arguments, a bad scene file, or the image cannot be written (one line says why)"})
 public class RenderCommand implements Callable<Integer> {
     /** Exit code: the image is written. */
     public static final int OK = 0;
-    /** Exit code: the image cannot be written (or another failure while rendering). */
-    public static final int FAILURE = 1;
-    /** Exit code: bad arguments or a bad scene file. */
+    /** Exit code: bad arguments, a bad scene file, or an image that cannot be written. */
     public static final int BAD_INPUT = 2;
+    /** The most rendering threads the command starts. */
+    public static final int MAX_THREADS = 1024;
 
     /** The width in characters of the progress bar's line. */
     private static final int BAR_WIDTH = 79;
@@ -113,8 +115,8 @@ public class RenderCommand implements Callable<Integer> {
     }
 
     /**
-     * A command line running a render command: bad arguments give one line, the synopsis and a hint
-     * (exit code 2), and an unexpected failure one line and exit code 1, never a stack trace.
+     * A command line running a render command: bad arguments, a bad scene file or an image that
+     * cannot be written give one line on the error stream and exit code 2, never a stack trace.
      *
      * @param terminal true when the error stream is a terminal
      * @return the command line; set its out and err writers before executing it
@@ -122,23 +124,32 @@ public class RenderCommand implements Callable<Integer> {
     public static CommandLine newCommandLine(boolean terminal) {
         return new CommandLine(new RenderCommand(terminal))
                 .setParameterExceptionHandler(RenderCommand::badArguments)
-                .setExecutionExceptionHandler((e, commandLine, parseResult) -> {
-                    commandLine.getErr().println("render failed: " + oneLine(String.valueOf(e)));
-                    commandLine.getErr().flush();
-                    return FAILURE;
-                });
+                .setExecutionExceptionHandler((e, commandLine, parseResult) ->
+                        printFailure(commandLine, ((RenderCommand) commandLine.getCommand()).failure(e)));
     }
 
-    /** Prints a bad argument's message, the synopsis and a hint to the error stream. */
+    /** Prints a bad argument's message, with picocli's suggestions and a hint, on one line. */
     private static int badArguments(CommandLine.ParameterException e, String[] args) {
         CommandLine commandLine = e.getCommandLine();
-        PrintWriter err = commandLine.getErr();
-        err.println(oneLine(e.getMessage()));
-        CommandLine.UnmatchedArgumentException.printSuggestions(e, err);
-        err.print("Usage: " + commandLine.getHelp().synopsis(0));
-        err.println("Try '" + commandLine.getCommandSpec().qualifiedName() + " --help' for more information.");
-        err.flush();
-        return commandLine.getCommandSpec().exitCodeOnInvalidInput();
+        StringWriter suggestions = new StringWriter();
+        CommandLine.UnmatchedArgumentException.printSuggestions(e, new PrintWriter(suggestions));
+        return printFailure(commandLine, oneLine(e.getMessage() + " " + suggestions) + " (see '"
+                + commandLine.getCommandSpec().qualifiedName() + " --help')");
+    }
+
+    /** Prints a failure on one line of the error stream; returns the exit code for bad input. */
+    private static int printFailure(CommandLine commandLine, String message) {
+        commandLine.getErr().println(oneLine(message));
+        commandLine.getErr().flush();
+        return BAD_INPUT;
+    }
+
+    /** The line telling what stopped the picture, in the user's terms (never an exception's class). */
+    private String failure(Exception e) {
+        if (e instanceof SceneFileException || e instanceof UncheckedIOException || e instanceof Failure)
+            return e.getMessage();
+        String problem = e.getMessage() == null || e.getMessage().isBlank() ? "an internal error" : e.getMessage();
+        return sceneFile + ": the scene cannot be rendered: " + problem;
     }
 
     /** The text on one line: line breaks and the blanks around them become one space. */
@@ -149,30 +160,62 @@ public class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         checkArguments();
-        PrintWriter err = spec.commandLine().getErr();
-        Picture picture;
-        try {
-            picture = SceneLoader.load(sceneFile);
-        } catch (IllegalArgumentException e) { // a SceneFileException names the file itself
-            err.println((e instanceof SceneFileException ? "" : sceneFile + ": ") + oneLine(e.getMessage()));
-            err.flush();
-            return BAD_INPUT;
-        }
-        picture = adjust(picture);
+        Picture picture = adjust(load());
         Path file = outputFile();
-        Render render = picture.newRender(file).setMultithreading(threads);
+        Render render = newRender(picture, file).setMultithreading(threads);
+        render.getImageWriter().checkOutput();
         long start = System.nanoTime();
-        try (ProgressBar bar = progressBar((long) picture.nX() * picture.nY())) {
+        WriterConsumer consumer = new WriterConsumer(spec.commandLine().getErr(), terminal);
+        try (ProgressBar bar = progressBar((long) picture.nX() * picture.nY(), consumer)) {
             render.setProgressListener(progress(bar));
-            picture.render(render);
-        } catch (UncheckedIOException e) {
-            err.println(oneLine(e.getMessage()));
-            err.flush();
-            return FAILURE;
+            render(picture, render, consumer);
         }
         double seconds = (System.nanoTime() - start) / 1e9;
         report(file, picture, seconds, render.getRayTracer());
         return OK;
+    }
+
+    /** Loads the scene file; not enough memory or stack for it is one line too. */
+    private Picture load() {
+        try {
+            return SceneLoader.load(sceneFile);
+        } catch (OutOfMemoryError e) {
+            throw new Failure(sceneFile + ": not enough memory to load the scene: its <mesh> files are too large;"
+                    + " use smaller meshes or give Java more memory (java -Xmx...)", e);
+        } catch (StackOverflowError e) {
+            throw new Failure(sceneFile + ": the scene's elements are nested too deeply to load; nest fewer"
+                    + " <geometries> inside each other", e);
+        }
+    }
+
+    /** The render of the picture; not enough memory for its image is one line naming the size. */
+    private Render newRender(Picture picture, Path file) {
+        try {
+            return picture.newRender(file);
+        } catch (OutOfMemoryError e) {
+            long megabytes = (long) picture.nX() * picture.nY() * Integer.BYTES >> 20;
+            throw new Failure(file + ": not enough memory for a " + picture.nX() + " x " + picture.nY()
+                    + " picture (" + megabytes + " MB); choose a smaller --width/--height or give Java more memory"
+                    + " (java -Xmx...)", e);
+        }
+    }
+
+    /**
+     * Renders and writes the picture. On a failure the progress bar is muted, so the failure's line is
+     * the only one; not enough memory while rendering is one line naming what to make smaller.
+     */
+    private void render(Picture picture, Render render, WriterConsumer consumer) {
+        try {
+            picture.render(render);
+        } catch (OutOfMemoryError e) {
+            consumer.mute();
+            throw new Failure(sceneFile + ": not enough memory to render the scene at " + picture.nX() + " x "
+                    + picture.nY() + "; choose a smaller --width/--height, fewer --beams or --aa, or give Java"
+                    + " more memory (java -Xmx...)", e);
+        } catch (RuntimeException e) {
+            consumer.mute();
+            throw e;
+        }
     }
 
     /** Checks the options' values; a bad one is a bad argument (exit code 2). */
@@ -181,15 +224,27 @@ public class RenderCommand implements Callable<Integer> {
         atLeastOne("--height", height);
         atLeastOne("--beams", beams);
         atLeastOne("--aa", antiAliasing);
-        if (threads < 0)
+        if (beams != null)
+            requireGrid("--beams", beams);
+        if (antiAliasing != null)
+            requireGrid("--aa", antiAliasing);
+        if (threads < 0 || threads > MAX_THREADS)
             throw new CommandLine.ParameterException(spec.commandLine(),
-                    "--threads must be 0 (one per core) or more, got " + threads);
+                    "--threads must be 0 (one per core) to " + MAX_THREADS + ", got " + threads);
         if (output != null) {
             Path name = output.getFileName();
             if (name == null || !name.toString().endsWith(ImageWriter.EXTENSION)
                     || name.toString().equals(ImageWriter.EXTENSION))
                 throw new CommandLine.ParameterException(spec.commandLine(),
                         "the output file name must end with " + ImageWriter.EXTENSION + ", got " + output);
+        }
+    }
+
+    private void requireGrid(String option, int value) {
+        try {
+            JitteredGrid.requireSqrtSamples(value, option);
+        } catch (IllegalArgumentException e) {
+            throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
     }
 
@@ -224,7 +279,11 @@ public class RenderCommand implements Callable<Integer> {
             h = height;
             w = (int) Math.max(1, Math.round((double) height * picture.nX() / picture.nY()));
         }
-        return picture.withSize(w, h).withSettings(settings);
+        try {
+            return picture.withSize(w, h).withSettings(settings);
+        } catch (IllegalArgumentException e) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "--width/--height: " + e.getMessage());
+        }
     }
 
     /**
@@ -241,12 +300,12 @@ public class RenderCommand implements Callable<Integer> {
     }
 
     /** A progress bar on the error stream, counting pixels. */
-    private ProgressBar progressBar(long pixels) {
+    private ProgressBar progressBar(long pixels, WriterConsumer consumer) {
         boolean unicode = terminal && StandardCharsets.UTF_8.equals(Charset.defaultCharset());
         return new ProgressBarBuilder().setTaskName("Rendering").setInitialMax(pixels).setUnit(" px", 1)
                 .setStyle(unicode ? ProgressBarStyle.UNICODE_BLOCK : ProgressBarStyle.ASCII)
                 .setUpdateIntervalMillis(terminal ? TERMINAL_UPDATE_MS : LOG_UPDATE_MS)
-                .setConsumer(new WriterConsumer(spec.commandLine().getErr(), terminal))
+                .setConsumer(consumer)
                 .build();
     }
 
@@ -285,6 +344,7 @@ public class RenderCommand implements Callable<Integer> {
         private final PrintWriter writer;
         private final boolean terminal;
         private String last;
+        private volatile boolean muted;
 
         WriterConsumer(PrintWriter writer, boolean terminal) {
             this.writer = writer;
@@ -296,8 +356,15 @@ public class RenderCommand implements Callable<Integer> {
             return BAR_WIDTH;
         }
 
+        /** Stops the bar: a failure's line follows, alone. */
+        void mute() {
+            muted = true;
+        }
+
         @Override
         public void accept(String rendered) {
+            if (muted)
+                return;
             if (terminal)
                 writer.print('\r' + rendered);
             else if (!rendered.equals(last)) // the library may draw the last state twice
@@ -308,9 +375,18 @@ public class RenderCommand implements Callable<Integer> {
 
         @Override
         public void close() {
-            if (terminal)
+            if (terminal && !muted)
                 writer.println();
             writer.flush();
+        }
+    }
+
+    /** A failure whose message is the whole line to print. */
+    private static final class Failure extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        Failure(String line, Throwable cause) {
+            super(line, cause);
         }
     }
 }

@@ -7,6 +7,7 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.concurrent.atomic.AtomicLong;
@@ -188,16 +189,18 @@ public class ImageWriter {
     }
 
     /** The failure to write an image, in the user's terms: what is in the way, not the exception's class. */
-    private static UncheckedIOException cannotWrite(Path path, IOException e) {
+    private UncheckedIOException cannotWrite(Path path, IOException e) {
         String reason;
         if (e instanceof AccessDeniedException)
             reason = "permission denied";
         else if (e instanceof FileAlreadyExistsException)
             reason = e.getMessage() + " is a file, not a folder";
+        else if (e instanceof NoSuchFileException)
+            reason = "no file can be made in " + folder;
         else if (e instanceof FileSystemException f && f.getReason() != null)
             reason = f.getReason();
         else
             reason = e.getMessage();
-        return new UncheckedIOException("cannot write image " + path + ": " + reason, e);
+        return new UncheckedIOException(path + ": cannot write image: " + reason, e);
     }
 }

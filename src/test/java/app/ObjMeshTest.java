@@ -26,6 +26,7 @@ import org.junit.jupiter.api.io.TempDir;
 import geometries.Triangle;
 import primitives.Point3D;
 import primitives.Vector;
+import testutil.TestFiles;
 
 /**
  * Unit tests for {@link ObjMesh}: reading OBJ files (quads, triangles, relative indices) into triangles,
@@ -325,5 +326,44 @@ class ObjMeshTest {
         // TC24: a scale and a position whose sum overflows: vertex 2 (1,-1,-1) lands at x = infinity
         assertBad(() -> ObjMesh.read(cube, Double.MAX_VALUE, new Point3D(Double.MAX_VALUE, 0, 0)), cube, "TC24",
                 "bad OBJ file", "vertex 2", "finite");
+    }
+
+    /** Writes an OBJ file and asserts that reading it fails naming the file, this line and the problem. */
+    private void assertBadLine(String name, String text, int line, String tc, String problem) {
+        Path file = TestFiles.write(folder, name, text);
+        assertBadFile(file, tc, file + ":" + line + ":", problem);
+    }
+
+    /**
+     * Test method for {@link ObjMesh#read(Path)}: face indices beyond the int range or the vertex list
+     * and lines without end are errors naming the file and the line; tiny triangles are kept.
+     */
+    @Test
+    void testIndicesAndLines() {
+        String square = "v 0 0 0\nv 1 0 0\nv 1 1 0\n";
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an index beyond the int range (4294967299 = 2^32 + 3) is an error at its line, not vertex 3
+        assertBadLine("wraps.obj", square + "f 1 2 4294967299\n", 4, "TC01", "vertex 4294967299");
+        // TC02: 99999999999 is named as it is written
+        assertBadLine("large.obj", square + "\nf 1 2 99999999999\n", 5, "TC02", "vertex 99999999999");
+        // TC03: an index past the vertex list, even when a later face is fine, names its line
+        assertBadLine("past.obj", square + "f 1 2 3\nf 1 2 7\nf 1 2 3\n", 5, "TC03",
+                "vertex 7, but the file has 3 vertices");
+        // TC04: a file without line breaks (a megabyte of zero bytes) is refused, not read into memory
+        assertBadLine("zeros.obj", "\0".repeat(ObjMesh.MAX_LINE_LENGTH + 1), 1, "TC04",
+                "longer than " + ObjMesh.MAX_LINE_LENGTH);
+        // TC05: a triangle whose edges are 1e-9 long, at scale 1, is kept (the tolerance follows its size)
+        Path tiny = TestFiles.write(folder, "tiny.obj", "v 0 0 0\nv 1e-9 0 0\nv 0 1e-9 0\nf 1 2 3\n");
+        assertEquals(5e-19, area(ObjMesh.read(tiny).get(0)), 1e-25, "TC05: the tiny triangle must be kept");
+
+        // ===== Boundary Values Tests =====
+        // TC11: index 0 (indices count from 1)
+        assertBadLine("zero.obj", square + "f 0 1 2\n", 4, "TC11", "vertex 0");
+        // TC12: 2147483648 (one past the int range) and -2147483648
+        assertBadLine("over.obj", square + "f 1 2 2147483648\n", 4, "TC12", "vertex 2147483648");
+        assertBadLine("under.obj", square + "f 1 2 -2147483648\n", 4, "TC12", "vertex -2147483648");
+        // TC13: a face naming a vertex defined later in the file is read
+        Path later = TestFiles.write(folder, "later.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n");
+        assertEquals(1, ObjMesh.read(later).size(), "TC13: a forward reference must be read");
     }
 }

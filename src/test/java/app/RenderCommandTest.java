@@ -11,6 +11,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.regex.Matcher;
@@ -33,6 +34,8 @@ import testutil.TestFiles;
 class RenderCommandTest {
     /** Where the tests' scene files and pictures go. */
     private static final Path FOLDER = Path.of("target", "test-cli");
+    /** How long the killed render runs, in milliseconds: it is still rendering or writing then. */
+    private static final long KILL_DELAY_MS = 1500;
 
     /**
      * The test scene: a grey floor, a blue sphere above it, and a square light of edge 80 casting the
@@ -372,12 +375,34 @@ class RenderCommandTest {
     private static void assertBadArgument(String tc, String message, String... args) {
         Result result = run(args);
         assertEquals(2, result.code(), tc + ": bad arguments should exit with 2");
-        List<String> lines = result.errLines();
-        assertTrue(lines.get(0).contains(message), tc + ": wrong message: " + result.err());
-        assertTrue(result.err().contains("Usage: render"), tc + ": no usage hint: " + result.err());
-        assertTrue(lines.get(lines.size() - 1).contains("render --help"), tc + ": no --help hint: " + result.err());
-        assertNoStackTrace(result, tc);
-        assertEquals("", result.out(), tc + ": nothing should go to the output stream");
+        assertOneLine(result, tc);
+        assertTrue(result.err().contains(message), tc + ": wrong message: " + result.err());
+        assertTrue(result.err().contains("(see 'render --help')"), tc + ": no --help hint: " + result.err());
+    }
+
+    /** Test method for the limits of the options: too large a grid or picture is one line, exit code 2. */
+    @Test
+    void testLimits() {
+        String scene = sceneFile.toString();
+        String png = FOLDER.resolve("limits.png").toString();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: --beams 30000 (a grid of 900 million cells, out of memory before) names the bound
+        assertBadArgument("TC01", "--beams must be between 1 and 1000, got 30000", scene, "-o", png, "--beams", "30000");
+        // TC02: --beams 1000000 (a negative array size before)
+        assertBadArgument("TC02", "--beams must be between 1 and 1000, got 1000000", scene, "-o", png, "--beams",
+                "1000000");
+        // TC03: --width 2147483647: the height follows, and the picture cannot be held
+        assertBadArgument("TC03", "--width/--height: image size 2147483647x1431655765 is too large", scene, "-o", png,
+                "--width", "2147483647");
+        // ===== Boundary Values Tests =====
+        // TC11: --beams 46341 and --aa 46341, whose squares overflow an int
+        assertBadArgument("TC11", "--beams must be between 1 and 1000, got 46341", scene, "-o", png, "--beams", "46341");
+        assertBadArgument("TC11", "--aa must be between 1 and 1000, got 46341", scene, "-o", png, "--aa", "46341");
+        // TC12: --beams 1001, one past the bound
+        assertBadArgument("TC12", "--beams must be between 1 and 1000, got 1001", scene, "-o", png, "--beams", "1001");
+        // TC13: --threads 1025, one past the bound
+        assertBadArgument("TC13", "--threads must be 0 (one per core) to 1024, got 1025", scene, "-o", png,
+                "--threads", "1025");
     }
 
     /** Test method for bad scene files: exit code 2 and one line naming the file, the place and the problem. */
@@ -434,20 +459,124 @@ class RenderCommandTest {
         assertTrue(line.contains(problem), tc + ": the message does not name " + problem + ": " + line);
     }
 
-    /** Test method for an image that cannot be written: exit code 1 and one line. */
+    /** Test method for an image that cannot be written: checked before rendering, one line, exit code 2. */
     @Test
     void testUnwritableImage(@TempDir Path folder) throws IOException {
         // ===== Equivalence Partitions Tests =====
-        // TC01: the image's folder is a regular file
+        // TC01: the image's folder is a regular file: the line names the image, no progress bar started
         Path notAFolder = Files.writeString(folder.resolve("file.txt"), "not a folder");
-        Result result = run(sceneFile.toString(), "-o", notAFolder.resolve("out.png").toString(),
-                "--width", "10", "--height", "10");
-        assertEquals(1, result.code(), "TC01: an unwritable image should exit with 1");
-        List<String> lines = result.errLines();
-        assertTrue(lines.get(lines.size() - 1).startsWith("cannot write image"),
-                "TC01: the last error line should say the image cannot be written: " + result.err());
-        assertNoStackTrace(result, "TC01");
-        assertEquals("", result.out(), "TC01: nothing should go to the output stream");
-        assertNotEquals(0, lines.size(), "TC01: no message");
+        assertUnwritable("TC01", notAFolder.resolve("out.png"), "cannot write image");
+        // TC02: an existing folder, not empty, named out.png: refused, the folder and its file stay
+        Path full = folder.resolve("full.png");
+        Path inside = TestFiles.write(full, "keep.txt", "keep");
+        assertUnwritable("TC02", full, "is a folder");
+        assertEquals("keep", Files.readString(inside), "TC02: the folder's file must stay");
+
+        // ===== Boundary Values Tests =====
+        // TC11: an existing empty folder named out.png: refused, not deleted
+        Path empty = Files.createDirectory(folder.resolve("empty.png"));
+        assertUnwritable("TC11", empty, "is a folder");
+        assertTrue(Files.isDirectory(empty), "TC11: the empty folder must stay");
+    }
+
+    private static void assertUnwritable(String tc, Path png, String problem) {
+        Result result = run(sceneFile.toString(), "-o", png.toString(), "--width", "10", "--height", "10");
+        assertEquals(2, result.code(), tc + ": an unwritable image should exit with 2");
+        assertOneLine(result, tc);
+        assertTrue(result.err().startsWith(png + ": cannot write image"), tc + ": the line must name the image: "
+                + result.err());
+        assertTrue(result.err().contains(problem), tc + ": the line must say " + problem + ": " + result.err());
+    }
+
+    /** Test method for scene files whose numbers or sizes overflow: one line with the place, exit code 2. */
+    @Test
+    void testOverflowingScenes(@TempDir Path folder) {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a view plane 1e308 wide, or 1e308 away
+        assertBadScene("TC01", TestFiles.write(folder, "width.xml", "<scene>\n<camera vp-width=\"1e308\"/>\n</scene>"),
+                ":2:", "<camera>: attribute 'vp-width' is too large");
+        assertBadScene("TC01", TestFiles.write(folder, "distance.xml",
+                "<scene>\n<camera vp-distance=\"1e308\"/>\n</scene>"), ":2:", "<camera>: attribute 'vp-distance'");
+        // TC02: kS 1e308 and kQ the largest double
+        assertBadScene("TC02", TestFiles.write(folder, "kS.xml", geometries("<sphere center=\"0 0 -100\" radius=\"50\""
+                + " kS=\"1e308\"/>")), ":3:", "<sphere>: attribute 'kS' is too large");
+        assertBadScene("TC02", TestFiles.write(folder, "kQ.xml", "<scene>\n<lights>\n<point-light color=\"1 1 1\""
+                + " position=\"0 0 0\" kQ=\"1.7976931348623157e308\"/>\n</lights>\n</scene>"), ":3:", "attribute 'kQ'");
+        // TC03: a point light whose kC, kL and kQ are all 0
+        assertBadScene("TC03", TestFiles.write(folder, "attenuation.xml", "<scene>\n<lights>\n<point-light color="
+                + "\"1 1 1\" position=\"0 0 0\" kC=\"0\" kL=\"0\" kQ=\"0\"/>\n</lights>\n</scene>"), ":3:",
+                "light attenuation kC, kL and kQ must not all be 0");
+        // TC04: 100,000 nested <geometries>
+        assertBadScene("TC04", TestFiles.write(folder, "nested.xml", "<scene>" + "<geometries>".repeat(100_000)
+                + "</geometries>".repeat(100_000) + "</scene>"), ":1:", "nested too deeply");
+        // TC05: a number of 1,000,000 digits
+        assertBadScene("TC05", TestFiles.write(folder, "digits.xml", geometries("<sphere center=\"0 0 0\" radius=\""
+                + "9".repeat(1_000_000) + "\"/>")), ":3:", "1000000 characters long");
+        // TC06: a mesh whose file has no line breaks, like /dev/zero
+        TestFiles.write(folder, "zeros.obj", "\0".repeat(ObjMesh.MAX_LINE_LENGTH + 1));
+        assertBadScene("TC06", TestFiles.write(folder, "zeros.xml", geometries("<mesh file=\"zeros.obj\"/>")), ":3:",
+                "zeros.obj:1: the line is longer than");
+        // TC07: an OBJ face index beyond the int range: the OBJ file's line too
+        TestFiles.write(folder, "wrap.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967299\n");
+        assertBadScene("TC07", TestFiles.write(folder, "wrap.xml", geometries("<mesh file=\"wrap.obj\"/>")), ":3:",
+                "wrap.obj:4: a face refers to vertex 4294967299");
+        // TC08: an unknown encoding and a file cut inside the XML declaration, each with a place
+        assertBadScene("TC08", TestFiles.write(folder, "encoding.xml", "<?xml version=\"1.0\" encoding=\"UTF-9\"?>"
+                + "\n<scene/>\n"), ":1:1:", "unknown character encoding 'UTF-9'");
+        assertBadScene("TC08", TestFiles.write(folder, "cut.xml", "<?xml version=\"1.0\" enc"), ":1:", "");
+        // ===== Boundary Values Tests =====
+        // TC11: a plane normal (0, 1e-200, 0) is not a zero vector: the scene renders
+        Path tiny = TestFiles.write(folder, "tiny.xml", geometries("<plane q0=\"0 -50 0\" normal=\"0 1e-200 0\"/>"));
+        Result result = run(tiny.toString(), "-o", folder.resolve("tiny.png").toString(), "--width", "10");
+        assertEquals(0, result.code(), "TC11: a tiny normal must render: " + result.err());
+    }
+
+    /**
+     * Test method for {@link Main}'s process: not enough memory for the picture, a German locale and a
+     * kill while rendering, each in a JVM of its own.
+     */
+    @Test
+    void testSeparateProcess(@TempDir Path folder) throws IOException, InterruptedException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an 8000 x 8000 picture with 128 MB of memory: one line naming the size and the options
+        Process process = java(folder, List.of("-Xmx128m"), sceneFile.toString(), "-o",
+                folder.resolve("big.png").toString(), "--width", "8000", "--height", "8000");
+        assertProcessFailure("TC01", process, "not enough memory for a 8000 x 8000 picture");
+        // TC02: with a German locale, the parser's message is in English
+        Path german = TestFiles.write(folder, "german.xml", "<scene>\n</scenex>\n");
+        process = java(folder, List.of("-Duser.language=de", "-Duser.country=DE"), german.toString(), "-o",
+                folder.resolve("german.png").toString());
+        assertProcessFailure("TC02", process, "The end-tag for element type \"scene\" must end with a '>' delimiter");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a render killed (SIGKILL) while running leaves the old picture whole
+        Path png = folder.resolve("killed.png");
+        assertEquals(0, run(sceneFile.toString(), "-o", png.toString(), "--width", "30").code(), "TC11: first render");
+        process = java(folder, List.of(), sceneFile.toString(), "-o", png.toString(), "--width", "1200", "--aa", "3");
+        Thread.sleep(KILL_DELAY_MS);
+        process.destroyForcibly().waitFor();
+        BufferedImage left = ImageIO.read(png.toFile());
+        assertTrue(left != null && (left.getWidth() == 30 || left.getWidth() == 1200),
+                "TC11: the picture must be the old one or the new one, whole");
+    }
+
+    /** Starts {@link Main} in a JVM of its own, with these JVM options and arguments; its err is read later. */
+    private static Process java(Path folder, List<String> options, String... args) throws IOException {
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.addAll(options);
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), Main.class.getName()));
+        command.addAll(List.of(args));
+        return new ProcessBuilder(command).redirectOutput(folder.resolve("out.txt").toFile()).start();
+    }
+
+    private static void assertProcessFailure(String tc, Process process, String message) throws IOException,
+            InterruptedException {
+        String err = new String(process.getErrorStream().readAllBytes());
+        assertEquals(2, process.waitFor(), tc + ": the process should exit with 2: " + err);
+        Result result = new Result(2, "", err);
+        assertEquals(1, result.errLines().size(), tc + ": not one line: " + err);
+        assertNoStackTrace(result, tc);
+        assertTrue(err.contains(message), tc + ": wrong message: " + err);
     }
 }

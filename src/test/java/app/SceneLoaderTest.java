@@ -347,7 +347,43 @@ class SceneLoaderTest {
         // TC24: null
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> SceneLoader.load(null),
                 "TC24: null must be refused");
-        assertMessage(e, "scene file", "TC24");
+        assertMessage(e, "scene file", "TC24");        // TC25: numbers that parse but overflow the render: refused at the element's line
+        assertBadFile(file("vp-width.xml", "<scene>\n<camera vp-width=\"1e308\"/>\n</scene>"), 2,
+                "<camera>: attribute 'vp-width' is too large (1.0E308)", "TC25");
+        assertBadFile(file("vp-distance.xml", "<scene>\n\n<camera vp-distance=\"1e308\"/>\n</scene>"), 3,
+                "<camera>: attribute 'vp-distance' is too large", "TC25");
+        assertBadFile(file("kS.xml", "<scene><geometries>\n<sphere center=\"0 0 0\" radius=\"1\" kS=\"1e308\"/>"
+                + "</geometries></scene>"), 2, "<sphere>: attribute 'kS' is too large", "TC25");
+        assertBadFile(file("kQ.xml", "<scene><lights>\n<point-light color=\"1 1 1\" position=\"0 0 0\" "
+                + "kQ=\"1.7976931348623157e308\"/></lights></scene>"), 2, "<point-light>: attribute 'kQ' is too large",
+                "TC25");
+        // TC26: a light whose kC, kL and kQ are all 0
+        assertBadFile(file("no-attenuation.xml", "<scene><lights>\n<point-light color=\"1 1 1\" position=\"0 0 0\" "
+                + "kC=\"0\" kL=\"0\" kQ=\"0\"/></lights></scene>"), 2, "<point-light>: light attenuation", "TC26");
+        // TC27: an image too large to hold, at the <image>'s line
+        assertBadFile(file("image.xml", "<scene>\n<image width=\"2147483647\" height=\"2\"/>\n</scene>"), 2,
+                "<image>: image size 2147483647x2 is too large", "TC27");
+    }
+
+    /** Test method for {@link SceneLoader#load(Path)}: extreme numbers that are meaningful are read. */
+    @Test
+    void testExtremeNumbers() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a plane normal (0, 1e-200, 0) is not a zero vector: the plane's normal is (0, 1, 0)
+        Picture picture = SceneLoader.load(file("tiny-normal.xml",
+                "<scene><geometries><plane q0=\"0 0 0\" normal=\"0 1e-200 0\"/></geometries></scene>"));
+        Plane plane = assertInstanceOf(Plane.class, bodies(picture).get(0), "TC01: a plane expected");
+        assertEquals(new Vector(0, 1, 0), plane.getNormal(), "TC01: wrong normal");
+        // TC02: a light with kC 0 and kL 1 (no constant attenuation) is read
+        picture = SceneLoader.load(file("kC0.xml", "<scene><lights><point-light color=\"1 1 1\" position=\"0 0 0\" "
+                + "kC=\"0\" kL=\"1\"/></lights></scene>"));
+        assertEquals(0, ((PointLight) picture.scene().lights.get(0)).getKc(), 0, "TC02: kC must be 0");
+
+        // ===== Boundary Values Tests =====
+        // TC11: numbers of magnitude 1e100 (the largest) are read
+        picture = SceneLoader.load(file("largest.xml", "<scene><camera vp-width=\"1e100\" vp-distance=\"1e100\"/>"
+                + "<geometries><sphere center=\"0 0 -1e100\" radius=\"1e100\"/></geometries></scene>"));
+        assertEquals(1e100, picture.camera().getWidth(), 0, "TC11: wrong view plane width");
     }
 
     /** Test method for {@link SceneLoader#load(Path)}: a loaded body is a real {@link Geometry} of the library. */

@@ -1,6 +1,7 @@
 package app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static testutil.TestAssertions.assertMessage;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -12,6 +13,7 @@ import static testutil.TestAssertions.assertColor;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 
 import org.junit.jupiter.api.Test;
 import org.xml.sax.SAXParseException;
@@ -290,5 +292,61 @@ class SceneParserTest {
         e = assertThrows(SceneFileException.class, () -> SceneParser.parse(zero), "TC13: width 0");
         assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'", e.getProblem(),
                 "TC13: wrong problem");
+    }
+
+    /**
+     * Test method for {@link SceneParser#parse(Path)}: sizes checked before the schema, the XML
+     * declaration's problems with a place, and English messages whatever the default locale.
+     */
+    @Test
+    void testLimitsAndDeclaration() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 100,000 nested <geometries>: refused at the 65th level, naming the limit
+        Path deep = file("deep.xml", "<scene>" + "<geometries>".repeat(100_000) + "</geometries>".repeat(100_000)
+                + "</scene>");
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(deep),
+                "TC01: deep nesting must be refused");
+        assertMessage(e, "nested too deeply: a scene file nests at most " + SceneParser.MAX_DEPTH, "TC01");
+        assertEquals(1, e.getLine(), "TC01: wrong line");
+        // TC02: a number of 1,000,000 digits: refused before the schema's pattern sees it, naming the limit
+        Path digits = file("digits.xml", "<scene><geometries><sphere center=\"0 0 0\" radius=\"" + "1".repeat(1_000_000)
+                + "\"/></geometries></scene>");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(digits), "TC02: a huge number must be refused");
+        assertMessage(e, "attribute 'radius' of <sphere> is 1000000 characters long", "TC02");
+        assertMessage(e, "at most " + SceneParser.MAX_VALUE_LENGTH, "TC02");
+        // TC03: an unknown encoding: named with a place, not the Java exception
+        Path encoding = file("encoding.xml", "<?xml version=\"1.0\" encoding=\"UTF-9\"?>\n<scene/>\n");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(encoding), "TC03: UTF-9 must be refused");
+        assertEquals(encoding + ":1:1: unknown character encoding 'UTF-9' in the XML declaration", e.getMessage(),
+                "TC03: wrong message");
+        // TC04: with a German default locale, the parser's and the validator's messages are in English
+        Locale locale = Locale.getDefault();
+        Path german = file("german.xml", "<scene>\n<geometries>\n<sphere center=\"0 0 0\" radius=\"x\"/>\n</geometries>"
+                + "\n</scene>\n");
+        Path unclosed = file("unclosed.xml", "<scene>\n</scenex>\n");
+        try {
+            Locale.setDefault(Locale.GERMAN);
+            e = assertThrows(SceneFileException.class, () -> SceneParser.parse(german), "TC04: a bad number");
+            assertEquals("attribute 'radius' of <sphere> must be a number, got 'x'", e.getProblem(),
+                    "TC04: the validator's message must be English");
+            e = assertThrows(SceneFileException.class, () -> SceneParser.parse(unclosed), "TC04: a bad end tag");
+            assertMessage(e, "The end-tag for element type \"scene\" must end with a", "TC04");
+        } finally {
+            Locale.setDefault(locale);
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: 64 nested elements (the limit) are read
+        Path limit = file("limit.xml", "<scene>" + "<geometries>".repeat(SceneParser.MAX_DEPTH - 1)
+                + "</geometries>".repeat(SceneParser.MAX_DEPTH - 1) + "</scene>");
+        assertEquals("scene", SceneParser.parse(limit).name(), "TC11: 64 levels must be read");
+        // TC12: a number of 1000 characters (the limit) is read
+        Path longest = file("longest.xml", "<scene><geometries><sphere center=\"0 0 0\" radius=\"1"
+                + "0".repeat(SceneParser.MAX_VALUE_LENGTH - 1) + "\"/></geometries></scene>");
+        assertEquals("scene", SceneParser.parse(longest).name(), "TC12: a 1000-character number must be read");
+        // TC13: a file cut inside the XML declaration: the place is the end of the file (line 1, column 6)
+        Path cut = file("cut.xml", "<?xml");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(cut), "TC13: a cut file");
+        assertEquals(cut + ":1:6: Premature end of file.", e.getMessage(), "TC13: wrong message");
     }
 }
