@@ -167,7 +167,7 @@ public class RenderCommand implements Callable<Integer> {
         long start = System.nanoTime();
         WriterConsumer consumer = new WriterConsumer(spec.commandLine().getErr(), terminal);
         try (ProgressBar bar = progressBar((long) picture.nX() * picture.nY(), consumer)) {
-            render.setProgressListener(progress(bar));
+            render.setProgressListener(progress(bar, consumer));
             render(picture, render, consumer);
         }
         double seconds = (System.nanoTime() - start) / 1e9;
@@ -309,13 +309,17 @@ public class RenderCommand implements Callable<Integer> {
                 .build();
     }
 
-    /** A thread-safe listener moving the bar forward (never back, whatever order the threads report in). */
-    private static LongConsumer progress(ProgressBar bar) {
+    /**
+     * A thread-safe listener moving the bar forward (never back, whatever order the threads report in),
+     * and letting it show itself once the first tile is done.
+     */
+    private static LongConsumer progress(ProgressBar bar, WriterConsumer consumer) {
         long[] shown = {0};
         return pixelsDone -> {
             synchronized (shown) {
                 if (pixelsDone > shown[0]) {
                     shown[0] = pixelsDone;
+                    consumer.start();
                     bar.stepTo(pixelsDone);
                 }
             }
@@ -344,7 +348,10 @@ public class RenderCommand implements Callable<Integer> {
         private final PrintWriter writer;
         private final boolean terminal;
         private String last;
-        private volatile boolean muted;
+        /** Whether a tile is done: off a terminal, the bar shows nothing before. */
+        private boolean started;
+        /** Whether the render failed: the bar shows nothing more, the failure's line is alone. */
+        private boolean muted;
 
         WriterConsumer(PrintWriter writer, boolean terminal) {
             this.writer = writer;
@@ -356,14 +363,22 @@ public class RenderCommand implements Callable<Integer> {
             return BAR_WIDTH;
         }
 
-        /** Stops the bar: a failure's line follows, alone. */
-        void mute() {
+        /** Lets the bar show itself off a terminal too: the render is under way. */
+        synchronized void start() {
+            started = true;
+        }
+
+        /** Stops the bar, and clears its line on a terminal: a failure's line follows, alone. */
+        synchronized void mute() {
             muted = true;
+            if (terminal)
+                writer.print("\r" + " ".repeat(BAR_WIDTH) + "\r");
+            writer.flush();
         }
 
         @Override
-        public void accept(String rendered) {
-            if (muted)
+        public synchronized void accept(String rendered) {
+            if (muted || !terminal && !started)
                 return;
             if (terminal)
                 writer.print('\r' + rendered);
@@ -374,7 +389,7 @@ public class RenderCommand implements Callable<Integer> {
         }
 
         @Override
-        public void close() {
+        public synchronized void close() {
             if (terminal && !muted)
                 writer.println();
             writer.flush();

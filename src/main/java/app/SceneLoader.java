@@ -23,6 +23,7 @@ import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
 import renderer.Camera;
+import renderer.JitteredGrid;
 import scene.Scene;
 
 import static primitives.Util.requireNonNull;
@@ -101,7 +102,12 @@ public final class SceneLoader {
         if (render == null)
             return RenderSettings.DEFAULT;
         return build(render, () -> new RenderSettings(render.flag("soft-shadows"), render.flag("adaptive"),
-                render.integer("beams"), render.integer("anti-aliasing"), render.longInteger("seed")));
+                grid(render, "beams"), grid(render, "anti-aliasing"), render.longInteger("seed")));
+    }
+
+    /** A sample grid's size, named by its attribute when it is out of bounds. */
+    private static int grid(SceneElement render, String attribute) {
+        return JitteredGrid.requireSqrtSamples(render.integer(attribute), "attribute '" + attribute + "'");
     }
 
     private static LightSource light(SceneElement light) {

@@ -6,6 +6,8 @@ import static primitives.Util.requirePositive;
 /**
  * An immutable RGB colour with non-negative double components on the 0..255 scale; components may
  * exceed 255 while light adds up and are clamped only when converted to {@link java.awt.Color}.
+ * Sums, products and quotients that would overflow stay at the largest double (a light far too
+ * bright is white, not an error).
  */
 public class Color {
     /** Black: no light. */
@@ -71,7 +73,7 @@ public class Color {
             rg += c.g;
             rb += c.b;
         }
-        return new Color(rr, rg, rb);
+        return saturated(rr, rg, rb);
     }
 
     /**
@@ -83,7 +85,7 @@ public class Color {
      */
     public Color scale(double k) {
         requireNonNegative(k, "colour scale factor");
-        return new Color(r * k, g * k, b * k);
+        return saturated(r * k, g * k, b * k);
     }
 
     /**
@@ -95,7 +97,12 @@ public class Color {
      */
     public Color reduce(double k) {
         requirePositive(k, "colour reduce divisor");
-        return new Color(r / k, g / k, b / k);
+        return saturated(r / k, g / k, b / k);
+    }
+
+    /** The colour of the result of arithmetic on finite components, an overflow kept at the largest double. */
+    private static Color saturated(double r, double g, double b) {
+        return new Color(Math.min(r, Double.MAX_VALUE), Math.min(g, Double.MAX_VALUE), Math.min(b, Double.MAX_VALUE));
     }
 
     /** @return the AWT colour, each component truncated to an integer and clamped to 0..255 */

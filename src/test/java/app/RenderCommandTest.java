@@ -14,6 +14,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Random;
+import java.util.regex.MatchResult;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -34,6 +36,23 @@ import testutil.TestFiles;
 class RenderCommandTest {
     /** Where the tests' scene files and pictures go. */
     private static final Path FOLDER = Path.of("target", "test-cli");
+    /** The seed of the fuzz test's mutations. */
+    private static final long FUZZ_SEED = 13;
+    /** How many mutated scene files the fuzz test runs. */
+    private static final int FUZZ_CASES = 400;
+    /** Values the fuzz test puts in place of a number or an attribute's value. */
+    private static final List<String> FUZZ_VALUES = List.of("1e308", "-1e308", "1.7976931348623157e308", "4.9e-324",
+            "1e-320", "0", "-0", "-1", "1e100", "1e101", "1e-200", "NaN", "INF", "99999999999", "2147483648", "46341",
+            "1001", "x", "", "1 2", "0 0 0", "1e400", "0.0000000001");
+    /** Characters the fuzz test inserts. */
+    private static final String FUZZ_CHARACTERS = "<>&\"'/= \n\u0000\u00e9";
+    /** Element names the fuzz test puts in place of another. */
+    private static final List<String> FUZZ_ELEMENTS = List.of("sphere", "triangle", "polygon", "plane", "tube",
+            "cylinder", "mesh", "geometries", "camera", "image", "render", "point-light", "spot-light",
+            "directional-light", "lights", "scene");
+    private static final Pattern NUMBER = Pattern.compile("(?<=[\" ])-?\\d+(\\.\\d+)?([eE][-+]?\\d+)?(?=[\" ])");
+    private static final Pattern VALUE = Pattern.compile("=\"[^\"]*\"");
+    private static final Pattern NAME = Pattern.compile("(?<=</?)[a-z-]+");
     /** How long the killed render runs, in milliseconds: it is still rendering or writing then. */
     private static final long KILL_DELAY_MS = 1500;
 
@@ -578,5 +597,72 @@ class RenderCommandTest {
         assertEquals(1, result.errLines().size(), tc + ": not one line: " + err);
         assertNoStackTrace(result, tc);
         assertTrue(err.contains(message), tc + ": wrong message: " + err);
+    }
+
+    /**
+     * Test method for {@link RenderCommand#call()} on mutated scene files: the gallery's files with
+     * numbers, values and names replaced, characters inserted or deleted, lines repeated and ends cut,
+     * from a fixed seed. Each run exits with 0, or with 2 and one line naming the file, never a trace.
+     */
+    @Test
+    void testFuzzedSceneFiles() throws IOException {
+        Path folder = FOLDER.resolve("fuzz");
+        List<String> scenes = new ArrayList<>();
+        try (var files = Files.list(Path.of("scenes"))) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".xml")).sorted().toList())
+                scenes.add(Files.readString(file));
+        }
+        TestFiles.write(folder.resolve("models"), "cube.obj", Files.readString(Path.of("scenes", "models", "cube.obj")));
+        Random random = new Random(FUZZ_SEED);
+        int failures = 0;
+        for (int c = 0; c < FUZZ_CASES; ++c) {
+            String text = scenes.get(random.nextInt(scenes.size()));
+            for (int m = random.nextInt(3); m >= 0; --m)
+                text = mutate(text, random);
+            Path file = TestFiles.write(folder, "fuzz" + c + ".xml", text);
+            Result result = run(file.toString(), "-o", folder.resolve("fuzz.png").toString(), "--width", "6",
+                    "--height", "6", "--beams", "2", "--aa", "1", "--threads", "1");
+            // ===== Equivalence Partitions Tests =====
+            // TC01: a mutated file renders (exit 0), or is refused with one line naming it (exit 2)
+            String tc = "TC01: " + file;
+            if (result.code() == 0)
+                continue;
+            ++failures;
+            assertEquals(2, result.code(), tc + ": exit code 0 or 2 expected: " + result.err());
+            assertOneLine(result, tc);
+            assertTrue(result.err().startsWith(file + ":"), tc + ": the line must name the file: " + result.err());
+        }
+        // TC02: the mutations hit: most files are refused, some still render
+        assertTrue(failures > FUZZ_CASES / 2 && failures < FUZZ_CASES, "TC02: " + failures + " of " + FUZZ_CASES
+                + " files refused");
+    }
+
+    /** One random mutation of a scene file's text. */
+    private static String mutate(String text, Random random) {
+        int at = random.nextInt(text.length() + 1);
+        return switch (random.nextInt(11)) { // numbers most often: they reach the library
+            case 0, 1, 2, 3 -> replace(text, NUMBER, FUZZ_VALUES.get(random.nextInt(FUZZ_VALUES.size())), random);
+            case 4, 5 -> replace(text, VALUE, "=\"" + FUZZ_VALUES.get(random.nextInt(FUZZ_VALUES.size())) + "\"", random);
+            case 6 -> replace(text, NAME, FUZZ_ELEMENTS.get(random.nextInt(FUZZ_ELEMENTS.size())), random);
+            case 7 -> text.substring(0, at);
+            case 8 -> text.substring(0, at) + text.substring(Math.min(text.length(), at + 1 + random.nextInt(20)));
+            case 9 -> text.substring(0, at) + FUZZ_CHARACTERS.charAt(random.nextInt(FUZZ_CHARACTERS.length()))
+                    + text.substring(at);
+            default -> {
+                List<String> lines = new ArrayList<>(text.lines().toList());
+                int line = random.nextInt(lines.size());
+                lines.add(line, lines.get(line));
+                yield String.join("\n", lines);
+            }
+        };
+    }
+
+    /** The text with one random match of the pattern replaced. */
+    private static String replace(String text, Pattern pattern, String replacement, Random random) {
+        List<MatchResult> matches = pattern.matcher(text).results().toList();
+        if (matches.isEmpty())
+            return text;
+        MatchResult match = matches.get(random.nextInt(matches.size()));
+        return text.substring(0, match.start()) + replacement + text.substring(match.end());
     }
 }

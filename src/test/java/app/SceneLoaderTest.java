@@ -360,9 +360,14 @@ class SceneLoaderTest {
         // TC26: a light whose kC, kL and kQ are all 0
         assertBadFile(file("no-attenuation.xml", "<scene><lights>\n<point-light color=\"1 1 1\" position=\"0 0 0\" "
                 + "kC=\"0\" kL=\"0\" kQ=\"0\"/></lights></scene>"), 2, "<point-light>: light attenuation", "TC26");
-        // TC27: an image too large to hold, at the <image>'s line
+        // TC27: sample grids past the bound, named by their attributes
+        assertBadFile(file("beams.xml", "<scene>\n<render beams=\"46341\"/>\n</scene>"), 2,
+                "<render>: attribute 'beams' must be between 1 and 1000, got 46341", "TC27");
+        assertBadFile(file("aa.xml", "<scene>\n<render anti-aliasing=\"1001\"/>\n</scene>"), 2,
+                "<render>: attribute 'anti-aliasing' must be between 1 and 1000, got 1001", "TC27");
+        // TC28: an image too large to hold, at the <image>'s line
         assertBadFile(file("image.xml", "<scene>\n<image width=\"2147483647\" height=\"2\"/>\n</scene>"), 2,
-                "<image>: image size 2147483647x2 is too large", "TC27");
+                "<image>: image size 2147483647x2 is too large", "TC28");
     }
 
     /** Test method for {@link SceneLoader#load(Path)}: extreme numbers that are meaningful are read. */

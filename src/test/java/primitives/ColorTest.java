@@ -103,6 +103,9 @@ class ColorTest {
         assertColor(10, 20, 30, c1.add(Color.BLACK), "TC11: adding BLACK must not change the colour");
         // TC12: adding a colour to itself: (20,40,60)
         assertColor(20, 40, 60, c1.add(c1), "TC12: wrong sum c + c");
+        // TC13: a sum past the largest double stays at the largest double
+        Color huge = new Color(Double.MAX_VALUE, 1, 0);
+        assertColor(Double.MAX_VALUE, 2, 0, huge.add(huge), "TC13: an overflowing sum must saturate");
     }
 
     /** Test method for {@link primitives.Color#scale(double)}. */
@@ -135,6 +138,9 @@ class ColorTest {
         // TC12: a tiny negative factor is rejected (-1e-300)
         assertThrows(IllegalArgumentException.class, () -> c.scale(-1e-300),
                 "TC12: tiny negative factor must be rejected");
+        // TC13: a product past the largest double (10 × 1e308) stays at the largest double
+        assertColor(Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, c.scale(1e308),
+                "TC13: an overflowing product must saturate");
     }
 
     /** Test method for {@link primitives.Color#reduce(double)}. */
@@ -169,6 +175,9 @@ class ColorTest {
         e = assertThrows(IllegalArgumentException.class, () -> c.reduce(Double.POSITIVE_INFINITY),
                 "TC12: infinite divisor must be rejected");
         assertMessage(e, "finite", "TC12");
+        // TC13: a tiny divisor (1e-308) whose quotient overflows: the largest double
+        assertColor(Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, c.reduce(1e-308),
+                "TC13: an overflowing quotient must saturate");
     }
 
     /** Test method for {@link primitives.Color#getColor()}. */
