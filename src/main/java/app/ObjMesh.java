@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.Reader;
 import java.io.StringReader;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -115,6 +116,8 @@ public final class ObjMesh {
     private static String reason(Exception e) {
         if (e instanceof NoSuchElementException)
             return "a vertex line (v, vt or vn) has no coordinates";
+        if (e instanceof AccessDeniedException)
+            return "permission denied";
         Throwable cause = e instanceof NumberFormatException ? e : e.getCause();
         if (cause instanceof NumberFormatException)
             return ("bad number: " + cause.getMessage()).replaceAll("\\R", " ");

@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.UnsupportedEncodingException;
 import java.net.URL;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -100,6 +101,8 @@ final class SceneParser {
             return builder.root;
         } catch (NoSuchFileException e) {
             throw new SceneFileException(file, "no such scene file", e);
+        } catch (AccessDeniedException e) {
+            throw new SceneFileException(file, "cannot read the scene file: permission denied", e);
         } catch (SAXParseException e) {
             int[] place = e.getLineNumber() > 0 ? new int[] {e.getLineNumber(), e.getColumnNumber()} : end(file);
             throw new SceneFileException(file, place[0], place[1], plain(e.getMessage()), e);
