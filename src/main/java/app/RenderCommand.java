@@ -222,8 +222,6 @@ public class RenderCommand implements Callable<Integer> {
     private void checkArguments() {
         atLeastOne("--width", width);
         atLeastOne("--height", height);
-        atLeastOne("--beams", beams);
-        atLeastOne("--aa", antiAliasing);
         if (beams != null)
             requireGrid("--beams", beams);
         if (antiAliasing != null)

@@ -16,8 +16,9 @@ import primitives.Vector;
  */
 final class SceneElement {
     /**
-     * The largest magnitude of a number in a scene file: products of a few such numbers (a squared
-     * distance times kQ, a colour times kS) stay finite, so no computation of the render overflows.
+     * The largest magnitude of a number in a scene file, 1e100 (the messages say so): products of a
+     * few such numbers (a squared distance times kQ, a colour times kS) stay finite, so no computation
+     * of the render overflows.
      */
     static final double MAX_MAGNITUDE = 1e100;
 
@@ -101,8 +102,9 @@ final class SceneElement {
     double[] numbers(String attribute) {
         String[] items = require(attribute).trim().split("\\s+");
         double[] values = new double[items.length];
+        String what = "attribute '" + attribute + "'";
         for (int k = 0; k < items.length; ++k)
-            values[k] = bounded(Double.parseDouble(items[k]), "attribute '" + attribute + "'");
+            values[k] = bounded(Double.parseDouble(items[k]), what);
         return values;
     }
 
@@ -116,8 +118,8 @@ final class SceneElement {
      */
     double bounded(double value, String what) {
         if (!(Math.abs(value) <= MAX_MAGNITUDE))
-            throw error(what + " is too large (" + value + "): numbers in a scene file must lie between -"
-                    + MAX_MAGNITUDE + " and " + MAX_MAGNITUDE + ", or the render overflows", null);
+            throw error(what + " is too large (" + value + "): numbers in a scene file must lie within ±1e100,"
+                    + " or the render overflows", null);
         return value;
     }
 

@@ -172,11 +172,14 @@ public final class SceneLoader {
         List<Triangle> triangles = ObjMesh.read(folder.resolve(mesh.text("file")), mesh.number("scale"),
                 mesh.point("position"));
         Geometries geometries = new Geometries();
+        Point3D farthest = Point3D.ZERO;
         for (Triangle triangle : triangles) {
             for (Point3D vertex : triangle.getVertices())
-                mesh.bounded(vertex.distance(Point3D.ZERO), "the distance of vertex " + vertex + " from the origin");
+                if (vertex.distanceSquared(Point3D.ZERO) > farthest.distanceSquared(Point3D.ZERO))
+                    farthest = vertex;
             geometries.add(surface(triangle, mesh));
         }
+        mesh.bounded(farthest.distance(Point3D.ZERO), "the distance of vertex " + farthest + " from the origin");
         return geometries;
     }
 

@@ -68,7 +68,7 @@ class MainTest {
         code = Main.run(new String[]{scene.toString(), "--beams", "0"}, new PrintWriter(out), new PrintWriter(err),
                 false);
         assertEquals(2, code, "TC03: a bad argument should exit with 2");
-        assertTrue(err.toString().startsWith("--beams must be 1 or more"), "TC03: wrong message: " + err);
+        assertTrue(err.toString().startsWith("--beams must be between 1 and 1000"), "TC03: wrong message: " + err);
 
         // ===== Boundary Values Tests =====
         // TC11: a bad scene file: exit 2, one line

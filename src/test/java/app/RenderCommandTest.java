@@ -379,9 +379,9 @@ class RenderCommandTest {
 
         // ===== Boundary Values Tests =====
         // TC11: --beams 0
-        assertBadArgument("TC11", "--beams must be 1 or more, got 0", scene, "-o", png, "--beams", "0");
+        assertBadArgument("TC11", "--beams must be between 1 and 1000, got 0", scene, "-o", png, "--beams", "0");
         // TC12: --aa 0
-        assertBadArgument("TC12", "--aa must be 1 or more, got 0", scene, "-o", png, "--aa", "0");
+        assertBadArgument("TC12", "--aa must be between 1 and 1000, got 0", scene, "-o", png, "--aa", "0");
         // TC13: --height 0
         assertBadArgument("TC13", "--height must be 1 or more, got 0", scene, "-o", png, "--height", "0");
         // TC14: --threads -1
