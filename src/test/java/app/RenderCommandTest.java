@@ -13,6 +13,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Random;
 import java.util.regex.MatchResult;
@@ -94,6 +95,17 @@ class RenderCommandTest {
 
     private static Path writeScene(String name, String renderElement) {
         return TestFiles.write(FOLDER, name, SCENE.formatted(renderElement));
+    }
+
+    /** An empty folder of this name under the test folder, emptied of an earlier run's files. */
+    private static Path freshFolder(String name) throws IOException {
+        Path folder = FOLDER.resolve(name);
+        if (Files.exists(folder))
+            try (var paths = Files.walk(folder)) {
+                for (Path path : paths.sorted(Comparator.reverseOrder()).toList())
+                    Files.delete(path);
+            }
+        return Files.createDirectories(folder);
     }
 
     /** Runs the command in this process, not on a terminal. */
@@ -480,7 +492,8 @@ class RenderCommandTest {
 
     /** Test method for an image that cannot be written: checked before rendering, one line, exit code 2. */
     @Test
-    void testUnwritableImage(@TempDir Path folder) throws IOException {
+    void testUnwritableImage() throws IOException {
+        Path folder = freshFolder("unwritable");
         // ===== Equivalence Partitions Tests =====
         // TC01: the image's folder is a regular file: the line names the image, no progress bar started
         Path notAFolder = Files.writeString(folder.resolve("file.txt"), "not a folder");
@@ -502,14 +515,16 @@ class RenderCommandTest {
         Result result = run(sceneFile.toString(), "-o", png.toString(), "--width", "10", "--height", "10");
         assertEquals(2, result.code(), tc + ": an unwritable image should exit with 2");
         assertOneLine(result, tc);
-        assertTrue(result.err().startsWith(png + ": cannot write image"), tc + ": the line must name the image: "
+        assertTrue(result.err().startsWith(png.toAbsolutePath() + ": cannot write image"),
+                tc + ": the line must name the image: "
                 + result.err());
         assertTrue(result.err().contains(problem), tc + ": the line must say " + problem + ": " + result.err());
     }
 
     /** Test method for scene files whose numbers or sizes overflow: one line with the place, exit code 2. */
     @Test
-    void testOverflowingScenes(@TempDir Path folder) {
+    void testOverflowingScenes() throws IOException {
+        Path folder = freshFolder("overflow");
         // ===== Equivalence Partitions Tests =====
         // TC01: a view plane 1e308 wide, or 1e308 away
         assertBadScene("TC01", TestFiles.write(folder, "width.xml", "<scene>\n<camera vp-width=\"1e308\"/>\n</scene>"),
@@ -555,7 +570,8 @@ class RenderCommandTest {
      * kill while rendering, each in a JVM of its own.
      */
     @Test
-    void testSeparateProcess(@TempDir Path folder) throws IOException, InterruptedException {
+    void testSeparateProcess() throws IOException, InterruptedException {
+        Path folder = freshFolder("process");
         // ===== Equivalence Partitions Tests =====
         // TC01: an 8000 x 8000 picture with 128 MB of memory: one line naming the size and the options
         Process process = java(folder, List.of("-Xmx128m"), sceneFile.toString(), "-o",
