@@ -1,6 +1,7 @@
 package app;
 
 import java.io.PrintWriter;
+import java.io.UncheckedIOException;
 import java.nio.file.Path;
 
 import renderer.ImageWriter;
@@ -15,13 +16,19 @@ public final class Main {
     }
 
     /**
-     * Renders the gallery, or runs the render command and exits with its exit code.
+     * Renders the gallery (exit code 2 with one line when {@code images/} cannot be written), or runs the
+     * render command and exits with its exit code.
      *
      * @param args none for the gallery, or the render command's arguments
      */
     public static void main(String[] args) {
         if (args.length == 0) {
-            renderGallery();
+            try {
+                renderGallery();
+            } catch (UncheckedIOException e) { // images/ cannot be written: one line, as for the render command
+                System.err.println(e.getMessage());
+                System.exit(RenderCommand.BAD_INPUT);
+            }
             return;
         }
         System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true),

@@ -165,6 +165,7 @@ public class ImageWriter {
             Files.createDirectories(folder);
             requireNotFolder(path);
             Path temporary = temporaryPath();
+            temporary.toFile().deleteOnExit(); // not left behind by Ctrl-C while writing
             try {
                 if (!ImageIO.write(image, "png", temporary.toFile()))
                     throw new IOException("no PNG writer available");

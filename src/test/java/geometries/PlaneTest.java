@@ -100,6 +100,13 @@ class PlaneTest {
         assertThrows(IllegalArgumentException.class, () -> new Plane(null, given), "TC02: null point must throw");
         assertThrows(IllegalArgumentException.class, () -> new Plane(Point3D.ZERO, (Vector) null),
                 "TC02: null normal must throw");
+        // ===== Boundary Values Tests =====
+        // TC11: a very short normal (0, 1e-200, 0) is not a zero vector: the unit normal is (0, 1, 0)
+        assertEquals(new Vector(0, 1, 0), new Plane(Point3D.ZERO, new Vector(0, 1e-200, 0)).getNormal(),
+                "TC11: a very short normal must be normalised");
+        // TC12: a very long normal (3e200, 0, 4e200) gives (0.6, 0, 0.8)
+        assertEquals(new Vector(0.6, 0, 0.8), new Plane(Point3D.ZERO, new Vector(3e200, 0, 4e200)).getNormal(),
+                "TC12: a very long normal must be normalised");
     }
 
     /**
