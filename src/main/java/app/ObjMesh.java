@@ -193,8 +193,6 @@ public final class ObjMesh {
      * of the vertices before its line. Indices that are not whole numbers are left to the library.
      */
     private static final class FaceIndexChecker {
-        private static final Pattern FACE = Pattern.compile("\\s*f(\\s.*)?");
-        private static final Pattern VERTEX = Pattern.compile("\\s*v(\\s.*)?");
         private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
 
         private final Path file;
@@ -211,12 +209,19 @@ public final class ObjMesh {
 
         /** Checks the next line. */
         void accept(CharSequence line) {
-            if (VERTEX.matcher(line).matches())
+            String text = line.toString().strip(); // a line may end with \r
+            if (starts(text, 'v'))
                 ++vertexCount;
-            else if (FACE.matcher(line).matches())
-                for (String item : line.toString().strip().substring(1).strip().split("\\s+"))
+            else if (starts(text, 'f'))
+                for (String item : text.substring(1).strip().split("\\s+"))
                     check(item.split("/", -1)[0]);
             ++lineNumber;
+        }
+
+        /** Whether the line is a statement of this one-letter keyword (v, f). */
+        private static boolean starts(String text, char keyword) {
+            return !text.isEmpty() && text.charAt(0) == keyword
+                    && (text.length() == 1 || Character.isWhitespace(text.charAt(1)));
         }
 
         private void check(String item) {

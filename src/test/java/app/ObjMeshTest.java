@@ -362,7 +362,9 @@ class ObjMeshTest {
         // TC12: 2147483648 (one past the int range) and -2147483648
         assertBadLine("over.obj", square + "f 1 2 2147483648\n", 4, "TC12", "vertex 2147483648");
         assertBadLine("under.obj", square + "f 1 2 -2147483648\n", 4, "TC12", "vertex -2147483648");
-        // TC13: a face naming a vertex defined later in the file is read
+        // TC13: a face naming a vertex defined later in the file is read, and so are lines ending with \r\n
+        Path windows = TestFiles.write(folder, "windows.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n");
+        assertEquals(1, ObjMesh.read(windows).size(), "TC13: lines ending with \\r\\n must be read");
         Path later = TestFiles.write(folder, "later.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n");
         assertEquals(1, ObjMesh.read(later).size(), "TC13: a forward reference must be read");
     }
