@@ -30,7 +30,7 @@ import renderer.Render;
  * stream, and prints the elapsed time and the ray counts. Options that are not given keep the scene
  * file's settings. Exit codes: 0 on success, 2 for anything that stops the picture (a bad argument, a
  * bad scene file, an image that cannot be written, not enough memory), with one line on the error
- * stream and never a stack trace. The output path is checked before rendering starts.
+ * stream and never a stack trace. The output path is checked first, before the scene file is read.
  */
 @Command(name = "render", mixinStandardHelpOptions = true, version = "render (ray tracer) 1.0",
         sortOptions = false, usageHelpAutoWidth = true,
@@ -160,10 +160,10 @@ public class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         checkArguments();
-        Picture picture = adjust(load());
         Path file = outputFile();
+        ImageWriter.checkOutput(file);
+        Picture picture = adjust(load());
         Render render = newRender(picture, file).setMultithreading(threads);
-        render.getImageWriter().checkOutput();
         long start = System.nanoTime();
         WriterConsumer consumer = new WriterConsumer(spec.commandLine().getErr(), terminal);
         try (ProgressBar bar = progressBar((long) picture.nX() * picture.nY(), consumer)) {

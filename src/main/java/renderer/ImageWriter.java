@@ -143,13 +143,22 @@ public class ImageWriter {
      * @throws UncheckedIOException when the image cannot be written there
      */
     public void checkOutput() {
-        Path path = getPath();
+        checkOutput(getPath());
+    }
+
+    /**
+     * Checks, before any rendering, that a PNG file can be written at a path: creates its folder when
+     * missing, and checks that a file can be made there and that the path is not a folder.
+     *
+     * @param file the PNG file
+     * @throws UncheckedIOException when no image can be written there
+     */
+    public static void checkOutput(Path file) {
         try {
-            Files.createDirectories(folder);
-            requireNotFolder(path);
-            Files.delete(Files.createFile(temporaryPath()));
+            prepareFolder(file);
+            Files.delete(Files.createFile(temporaryPath(file)));
         } catch (IOException e) {
-            throw cannotWrite(path, e);
+            throw cannotWrite(file, e);
         }
     }
 
@@ -162,9 +171,8 @@ public class ImageWriter {
     public void writeToImage() {
         Path path = getPath();
         try {
-            Files.createDirectories(folder);
-            requireNotFolder(path);
-            Path temporary = temporaryPath();
+            prepareFolder(path);
+            Path temporary = temporaryPath(path);
             temporary.toFile().deleteOnExit(); // not left behind by Ctrl-C while writing
             try {
                 if (!ImageIO.write(image, "png", temporary.toFile()))
@@ -178,30 +186,32 @@ public class ImageWriter {
         }
     }
 
-    private static void requireNotFolder(Path path) throws IOException {
-        if (Files.isDirectory(path))
+    /** Creates the file's folder when missing; the file itself must not be a folder. */
+    private static void prepareFolder(Path file) throws IOException {
+        Files.createDirectories(file.toAbsolutePath().getParent());
+        if (Files.isDirectory(file))
             throw new IOException("it is a folder");
     }
 
-    /** A new temporary file name beside the image, hidden and unique to this write. */
-    private Path temporaryPath() {
-        return folder.resolve("." + imageName + EXTENSION + "." + ProcessHandle.current().pid() + "-"
+    /** A new temporary file beside the image, hidden and unique to this write. */
+    private static Path temporaryPath(Path file) {
+        return file.resolveSibling("." + file.getFileName() + "." + ProcessHandle.current().pid() + "-"
                 + TEMPORARY_COUNT.incrementAndGet() + ".tmp");
     }
 
     /** The failure to write an image, in the user's terms: what is in the way, not the exception's class. */
-    private UncheckedIOException cannotWrite(Path path, IOException e) {
+    private static UncheckedIOException cannotWrite(Path file, IOException e) {
         String reason;
         if (e instanceof AccessDeniedException)
             reason = "permission denied";
         else if (e instanceof FileAlreadyExistsException)
             reason = e.getMessage() + " is a file, not a folder";
         else if (e instanceof NoSuchFileException)
-            reason = "no file can be made in " + folder;
+            reason = "no file can be made in " + file.toAbsolutePath().getParent();
         else if (e instanceof FileSystemException f && f.getReason() != null)
             reason = f.getReason();
         else
             reason = e.getMessage();
-        return new UncheckedIOException(path + ": cannot write image: " + reason, e);
+        return new UncheckedIOException(file + ": cannot write image: " + reason, e);
     }
 }

@@ -503,6 +503,11 @@ class RenderCommandTest {
         Path inside = TestFiles.write(full, "keep.txt", "keep");
         assertUnwritable("TC02", full, "is a folder");
         assertEquals("keep", Files.readString(inside), "TC02: the folder's file must stay");
+        // TC03: the output is checked before the scene file is read: with a missing scene too, the image is named
+        Result result = run(folder.resolve("missing.xml").toString(), "-o", full.toString());
+        assertEquals(2, result.code(), "TC03: wrong exit code");
+        assertTrue(result.err().startsWith(full + ": cannot write image"), "TC03: the image must be named first: "
+                + result.err());
 
         // ===== Boundary Values Tests =====
         // TC11: an existing empty folder named out.png: refused, not deleted
@@ -515,8 +520,7 @@ class RenderCommandTest {
         Result result = run(sceneFile.toString(), "-o", png.toString(), "--width", "10", "--height", "10");
         assertEquals(2, result.code(), tc + ": an unwritable image should exit with 2");
         assertOneLine(result, tc);
-        assertTrue(result.err().startsWith(png.toAbsolutePath() + ": cannot write image"),
-                tc + ": the line must name the image: "
+        assertTrue(result.err().startsWith(png + ": cannot write image"), tc + ": the line must name the image: "
                 + result.err());
         assertTrue(result.err().contains(problem), tc + ": the line must say " + problem + ": " + result.err());
     }

@@ -265,12 +265,18 @@ class ImageWriterTest {
                     "TC02: an image path that is a folder must be rejected");
             assertMessage(e, "is a folder", "TC02");
             Files.delete(writer.getPath());
-            // TC03: a folder whose parent is a file: rejected, naming the image
+            // TC03: the check of a path alone, before any image: its missing folder is created, left empty
+            ImageWriter.checkOutput(folder.resolve("other").resolve("x.png"));
+            try (var files = Files.list(folder.resolve("other"))) {
+                assertEquals(0, files.count(), "TC03: the check must leave the folder empty");
+            }
+            Files.delete(folder.resolve("other"));
+            // TC04: a folder whose parent is a file: rejected, naming the image
             Files.writeString(blocker, "not a folder");
             e = assertThrows(UncheckedIOException.class,
                     () -> new ImageWriter("picture", 2, 2, blocker.resolve("sub")).checkOutput(),
-                    "TC03: a folder below a file must be rejected");
-            assertMessage(e, blocker.resolve("sub").resolve("picture.png") + ": cannot write image", "TC03");
+                    "TC04: a folder below a file must be rejected");
+            assertMessage(e, blocker.resolve("sub").resolve("picture.png") + ": cannot write image", "TC04");
         } finally {
             deleteAll(blocker, folder.resolve("sub"), folder);
         }
