@@ -26,6 +26,7 @@ public class Sphere extends Geometry {
      *
      * @param center the centre
      * @param radius the radius, positive
+     * @throws IllegalArgumentException when the centre is null or the radius is not positive
      */
     public Sphere(Point3D center, double radius) {
         this.center = requireNonNull(center, "sphere center");
@@ -34,6 +35,18 @@ public class Sphere extends Geometry {
         this.cy = center.getY();
         this.cz = center.getZ();
         this.radiusSquared = radius * radius;
+    }
+
+    /**
+     * Creates a sphere, radius first: the course's other order, the same sphere as
+     * {@link #Sphere(Point3D, double)}.
+     *
+     * @param radius the radius, positive
+     * @param center the centre
+     * @throws IllegalArgumentException when the centre is null or the radius is not positive
+     */
+    public Sphere(double radius, Point3D center) {
+        this(center, radius);
     }
 
     /** @return the centre */

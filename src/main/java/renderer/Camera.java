@@ -44,11 +44,12 @@ public class Camera {
     }
 
     /**
-     * Sets the size of the view plane.
+     * Sets the size of the view plane (the report's name; {@link #setViewPlaneSize} is the course's).
      *
      * @param width  its width, positive
      * @param height its height, positive
      * @return this camera
+     * @throws IllegalArgumentException when a size is not positive or not finite
      */
     public Camera setVpSize(double width, double height) {
         this.width = requirePositive(width, "view plane width");
@@ -57,14 +58,40 @@ public class Camera {
     }
 
     /**
-     * Sets the distance from the camera to the view plane.
+     * Sets the size of the view plane: the course's name for {@link #setVpSize}, the same setter.
+     *
+     * @param width  its width, positive
+     * @param height its height, positive
+     * @return this camera
+     * @throws IllegalArgumentException when a size is not positive or not finite
+     */
+    public Camera setViewPlaneSize(double width, double height) {
+        return setVpSize(width, height);
+    }
+
+    /**
+     * Sets the distance from the camera to the view plane (the report's name; {@link #setDistance}
+     * is the course's).
      *
      * @param distance the distance, positive
      * @return this camera
+     * @throws IllegalArgumentException when the distance is not positive or not finite
      */
     public Camera setVpDistance(double distance) {
         this.distance = requirePositive(distance, "view plane distance");
         return this;
+    }
+
+    /**
+     * Sets the distance from the camera to the view plane: the course's name for
+     * {@link #setVpDistance}, the same setter.
+     *
+     * @param distance the distance, positive
+     * @return this camera
+     * @throws IllegalArgumentException when the distance is not positive or not finite
+     */
+    public Camera setDistance(double distance) {
+        return setVpDistance(distance);
     }
 
     /** @return the position */
