@@ -48,7 +48,7 @@ public class Cylinder extends Tube {
         this(axisRay, radius, height);
     }
 
-    /** @return the height */
+    /** {@return the height} */
     public double getHeight() {
         return height;
     }

@@ -141,12 +141,12 @@ public class Polygon extends Geometry {
         return normals;
     }
 
-    /** @return the vertices, in order */
+    /** {@return the vertices, in order} */
     public List<Point3D> getVertices() {
         return vertices;
     }
 
-    /** @return the plane the polygon lies in */
+    /** {@return the plane the polygon lies in} */
     public Plane getPlane() {
         return plane;
     }

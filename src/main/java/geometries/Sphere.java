@@ -49,12 +49,12 @@ public class Sphere extends Geometry {
         this(center, radius);
     }
 
-    /** @return the centre */
+    /** {@return the centre} */
     public Point3D getCenter() {
         return center;
     }
 
-    /** @return the radius */
+    /** {@return the radius} */
     public double getRadius() {
         return radius;
     }

@@ -43,12 +43,12 @@ public class Tube extends Geometry {
         this(axisRay, radius);
     }
 
-    /** @return the axis */
+    /** {@return the axis} */
     public Ray getAxisRay() {
         return axisRay;
     }
 
-    /** @return the radius */
+    /** {@return the radius} */
     public double getRadius() {
         return radius;
     }

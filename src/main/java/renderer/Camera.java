@@ -94,37 +94,37 @@ public class Camera {
         return setVpDistance(distance);
     }
 
-    /** @return the position */
+    /** {@return the position} */
     public Point3D getP0() {
         return p0;
     }
 
-    /** @return the unit forward direction */
+    /** {@return the unit forward direction} */
     public Vector getVTo() {
         return vTo;
     }
 
-    /** @return the unit up direction */
+    /** {@return the unit up direction} */
     public Vector getVUp() {
         return vUp;
     }
 
-    /** @return the unit right direction, vTo × vUp */
+    /** {@return the unit right direction, vTo × vUp} */
     public Vector getVRight() {
         return vRight;
     }
 
-    /** @return the view plane width (0 until set) */
+    /** {@return the view plane width (0 until set)} */
     public double getWidth() {
         return width;
     }
 
-    /** @return the view plane height (0 until set) */
+    /** {@return the view plane height (0 until set)} */
     public double getHeight() {
         return height;
     }
 
-    /** @return the view plane distance (0 until set) */
+    /** {@return the view plane distance (0 until set)} */
     public double getDistance() {
         return distance;
     }

@@ -59,17 +59,17 @@ public class ImageWriter {
         this.image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
     }
 
-    /** @return the number of columns */
+    /** {@return the number of columns} */
     public int getNx() {
         return nX;
     }
 
-    /** @return the number of rows */
+    /** {@return the number of rows} */
     public int getNy() {
         return nY;
     }
 
-    /** @return the file the image is written to */
+    /** {@return the file the image is written to} */
     public Path getPath() {
         return folder.resolve(imageName + EXTENSION);
     }
