@@ -100,6 +100,20 @@ public class ImageWriter {
         return new java.awt.Color(image.getRGB(xIndex, yIndex));
     }
 
+    /**
+     * Copies the picture as it is now into another image of the same size (a preview's frame).
+     *
+     * @param target the image to copy into
+     * @throws IllegalArgumentException when the target is null or of another size
+     */
+    public void copyTo(BufferedImage target) {
+        requireNonNull(target, "target image");
+        if (target.getWidth() != nX || target.getHeight() != nY)
+            throw new IllegalArgumentException("target image is " + target.getWidth() + "x" + target.getHeight()
+                    + ", not " + nX + "x" + nY);
+        target.getRaster().setRect(image.getRaster());
+    }
+
     private void checkPixel(int xIndex, int yIndex) {
         if (xIndex < 0 || xIndex >= nX || yIndex < 0 || yIndex >= nY)
             throw new IllegalArgumentException("pixel (" + xIndex + ", " + yIndex + ") is outside the " + nX + "x" + nY + " image");
