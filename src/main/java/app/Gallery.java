@@ -30,7 +30,7 @@ public final class Gallery {
     private Gallery() {
     }
 
-    /** @return every picture of the gallery */
+    /** {@return every picture of the gallery} */
     public static List<Picture> pictures() {
         return List.of(twoColors(),
                 lights("sphereDirectional", sphereScene(), sphereCamera(),

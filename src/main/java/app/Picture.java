@@ -27,7 +27,19 @@ public record Picture(String name, int nX, int nY, Scene scene, Camera camera, i
     /** The colour of the grid lines. */
     public static final Color GRID_COLOR = new Color(java.awt.Color.YELLOW);
 
-    /** Checks the parts. */
+    /**
+     * Checks the parts.
+     *
+     * @param name         the image's file name, without extension
+     * @param nX           the number of columns, positive
+     * @param nY           the number of rows, positive
+     * @param scene        the scene
+     * @param camera       the camera
+     * @param gridInterval the distance in pixels between grid lines, 0 for none
+     * @param settings     soft shadows, anti-aliasing and the seed
+     * @throws IllegalArgumentException when a part is null, the size is not positive or the grid
+     *                                  interval is negative
+     */
     public Picture {
         requireNonNull(name, "picture name");
         requireNonNull(scene, "picture scene");

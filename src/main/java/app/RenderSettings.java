@@ -19,13 +19,24 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
     public static final RenderSettings DEFAULT = new RenderSettings(false, false,
             RayTracerBase.DEFAULT_SQRT_BEAM_NUM, 1, RayTracerBase.DEFAULT_SEED);
 
-    /** Checks the counts. */
+    /**
+     * Checks the counts.
+     *
+     * @param softShadows         whether lights with an area cast soft shadows
+     * @param adaptiveSoftShadows whether a light's square is sampled adaptively
+     * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 or more
+     * @param antiAliasing        the number of rays along each side of a pixel, 1 or more
+     * @param seed                the seed of the per-pixel random streams
+     * @throws IllegalArgumentException when a count is below 1
+     */
     public RenderSettings {
         JitteredGrid.requireSqrtSamples(sqrtBeamNum, "sqrtBeamNum");
         JitteredGrid.requireSqrtSamples(antiAliasing, "anti-aliasing (rays along each side of a pixel)");
     }
 
     /**
+     * Turns soft shadows on or off.
+     *
      * @param on true for soft shadows
      * @return these settings with soft shadows on or off
      */
@@ -34,6 +45,8 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
     }
 
     /**
+     * Turns adaptive sampling of lights' squares on or off.
+     *
      * @param on true for adaptive sampling of lights' squares
      * @return these settings with adaptive soft shadows on or off
      */
@@ -42,6 +55,8 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
     }
 
     /**
+     * Sets the number of shadow rays per light.
+     *
      * @param n the number of cells along each side of a light's square, 1 to 1000
      * @return these settings with n × n + 1 shadow rays per light
      */
@@ -50,6 +65,8 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
     }
 
     /**
+     * Sets the number of rays per pixel.
+     *
      * @param k the number of rays along each side of a pixel, 1 to 1000
      * @return these settings with k × k rays per pixel
      */
@@ -58,6 +75,8 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
     }
 
     /**
+     * Sets the seed of the random streams.
+     *
      * @param newSeed the seed of the random streams
      * @return these settings with another seed
      */

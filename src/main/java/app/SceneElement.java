@@ -44,12 +44,12 @@ final class SceneElement {
         this.column = column;
     }
 
-    /** @return the element's name */
+    /** {@return the element's name} */
     String name() {
         return name;
     }
 
-    /** @return the child elements, in file order */
+    /** {@return the child elements, in file order} */
     List<SceneElement> children() {
         return Collections.unmodifiableList(children);
     }
@@ -59,7 +59,7 @@ final class SceneElement {
         children.add(child);
     }
 
-    /** @return the first child of this name, or null */
+    /** {@return the first child of this name, or null} */
     SceneElement child(String childName) {
         for (SceneElement child : children)
             if (child.name.equals(childName))
@@ -67,38 +67,38 @@ final class SceneElement {
         return null;
     }
 
-    /** @return whether the attribute is given (or has a default) */
+    /** {@return whether the attribute is given (or has a default)} */
     boolean has(String attribute) {
         return attributes.containsKey(attribute);
     }
 
-    /** @return the attribute's text, or null when absent */
+    /** {@return the attribute's text, or null when absent} */
     String text(String attribute) {
         return attributes.get(attribute);
     }
 
-    /** @return the attribute as a number, at most {@link #MAX_MAGNITUDE} in magnitude */
+    /** {@return the attribute as a number, at most {@link #MAX_MAGNITUDE} in magnitude} */
     double number(String attribute) {
         return bounded(Double.parseDouble(require(attribute)), "attribute '" + attribute + "'");
     }
 
-    /** @return the attribute as an int */
+    /** {@return the attribute as an int} */
     int integer(String attribute) {
         return Integer.parseInt(require(attribute));
     }
 
-    /** @return the attribute as a long */
+    /** {@return the attribute as a long} */
     long longInteger(String attribute) {
         return Long.parseLong(require(attribute));
     }
 
-    /** @return the attribute as a boolean (schema booleans: true, false, 1, 0) */
+    /** {@return the attribute as a boolean (schema booleans: true, false, 1, 0)} */
     boolean flag(String attribute) {
         String value = require(attribute);
         return "true".equals(value) || "1".equals(value);
     }
 
-    /** @return the attribute as a list of numbers, each at most {@link #MAX_MAGNITUDE} in magnitude */
+    /** {@return the attribute as a list of numbers, each at most {@link #MAX_MAGNITUDE} in magnitude} */
     double[] numbers(String attribute) {
         String[] items = require(attribute).trim().split("\\s+");
         double[] values = new double[items.length];
@@ -123,18 +123,18 @@ final class SceneElement {
         return value;
     }
 
-    /** @return the attribute (three numbers) as a point */
+    /** {@return the attribute (three numbers) as a point} */
     Point3D point(String attribute) {
         double[] xyz = numbers(attribute);
         return new Point3D(xyz[0], xyz[1], xyz[2]);
     }
 
-    /** @return the attribute (three numbers) as a vector */
+    /** {@return the attribute (three numbers) as a vector} */
     Vector vector(String attribute) {
         return new Vector(point(attribute));
     }
 
-    /** @return the attribute (three numbers) as a colour */
+    /** {@return the attribute (three numbers) as a colour} */
     Color color(String attribute) {
         double[] rgb = numbers(attribute);
         return new Color(rgb[0], rgb[1], rgb[2]);

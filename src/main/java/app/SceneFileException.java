@@ -12,9 +12,13 @@ public class SceneFileException extends IllegalArgumentException {
     /** The line or column of a problem whose place in the file is not known. */
     public static final int UNKNOWN = -1;
 
+    /** The scene file. */
     private final transient Path file;
+    /** The line of the problem, from 1, or {@link #UNKNOWN}. */
     private final int line;
+    /** The column of the problem, from 1, or {@link #UNKNOWN}. */
     private final int column;
+    /** What is wrong, without the place. */
     private final String problem;
 
     /**
@@ -51,22 +55,22 @@ public class SceneFileException extends IllegalArgumentException {
         return file + ":" + line + (column > 0 ? ":" + column : "");
     }
 
-    /** @return the scene file */
+    /** {@return the scene file} */
     public Path getFile() {
         return file;
     }
 
-    /** @return the line of the problem, from 1, or {@link #UNKNOWN} */
+    /** {@return the line of the problem, from 1, or {@link #UNKNOWN}} */
     public int getLine() {
         return line;
     }
 
-    /** @return the column of the problem, from 1, or {@link #UNKNOWN} */
+    /** {@return the column of the problem, from 1, or {@link #UNKNOWN}} */
     public int getColumn() {
         return column;
     }
 
-    /** @return what is wrong, without the file and position */
+    /** {@return what is wrong, without the file and position} */
     public String getProblem() {
         return problem;
     }

@@ -89,7 +89,7 @@ public final class BoundingVolumeHierarchy {
             this.gatheredUnbounded = new Geometry[unboundedLength];
         }
 
-        /** @return the pyramid of the shadow bundle the next {@link #gather} looks at */
+        /** {@return the pyramid of the shadow bundle the next {@link #gather} looks at} */
         public ShadowFrustum getFrustum() {
             return frustum;
         }
@@ -154,22 +154,22 @@ public final class BoundingVolumeHierarchy {
             generic.add(item);
     }
 
-    /** @return a fresh scratch space for queries on this hierarchy */
+    /** {@return a fresh scratch space for queries on this hierarchy} */
     public Query newQuery() {
         return new Query(depth + 2, unbounded.length);
     }
 
-    /** @return the number of nodes of the tree (0 when no body is bounded) */
+    /** {@return the number of nodes of the tree (0 when no body is bounded)} */
     public int getNodesCount() {
         return nodesCount;
     }
 
-    /** @return the depth of the tree (1 for a single leaf, 0 for none) */
+    /** {@return the depth of the tree (1 for a single leaf, 0 for none)} */
     public int getDepth() {
         return depth;
     }
 
-    /** @return the number of bodies in the tree */
+    /** {@return the number of bodies in the tree} */
     public int getBoundedCount() {
         return bodies.length;
     }

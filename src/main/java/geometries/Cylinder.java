@@ -28,13 +28,27 @@ public class Cylinder extends Tube {
      * @param axisRay the axis; its start is the centre of the bottom cap
      * @param radius  the radius, positive
      * @param height  the height, positive
+     * @throws IllegalArgumentException when the axis is null or the radius or height is not positive
      */
     public Cylinder(Ray axisRay, double radius, double height) {
         super(axisRay, radius);
         this.height = requirePositive(height, "cylinder height");
     }
 
-    /** @return the height */
+    /**
+     * Creates a cylinder, radius first: the course's other order, the same cylinder as
+     * {@link #Cylinder(Ray, double, double)}.
+     *
+     * @param radius  the radius, positive
+     * @param axisRay the axis; its start is the centre of the bottom cap
+     * @param height  the height, positive
+     * @throws IllegalArgumentException when the axis is null or the radius or height is not positive
+     */
+    public Cylinder(double radius, Ray axisRay, double height) {
+        this(axisRay, radius, height);
+    }
+
+    /** {@return the height} */
     public double getHeight() {
         return height;
     }

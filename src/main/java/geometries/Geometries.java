@@ -37,7 +37,7 @@ public class Geometries extends Intersectable {
         return this;
     }
 
-    /** @return the objects held, as an unmodifiable list */
+    /** {@return the objects held, as an unmodifiable list} */
     public List<Intersectable> getGeometries() {
         return Collections.unmodifiableList(items);
     }

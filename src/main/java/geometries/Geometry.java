@@ -20,6 +20,10 @@ public abstract class Geometry extends Intersectable {
     private Color emission = Color.BLACK;
     private Material material = new Material();
 
+    /** Creates a body with black emission and the default material (all factors 0). */
+    protected Geometry() {
+    }
+
     /**
      * The unit normal of the surface at a point on it.
      *
@@ -28,7 +32,7 @@ public abstract class Geometry extends Intersectable {
      */
     public abstract Vector getNormal(Point3D point);
 
-    /** @return the emission colour (black by default) */
+    /** {@return the emission colour (black by default)} */
     public Color getEmission() {
         return emission;
     }
@@ -44,7 +48,7 @@ public abstract class Geometry extends Intersectable {
         return this;
     }
 
-    /** @return the material (all factors 0 by default) */
+    /** {@return the material (all factors 0 by default)} */
     public Material getMaterial() {
         return material;
     }

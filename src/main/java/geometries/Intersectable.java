@@ -13,6 +13,10 @@ import static primitives.Util.requireNonNull;
  */
 public abstract class Intersectable {
 
+    /** Creates an intersectable object. */
+    protected Intersectable() {
+    }
+
     /**
      * An intersection point together with the geometry it lies on.
      */

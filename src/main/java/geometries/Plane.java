@@ -72,12 +72,12 @@ public class Plane extends Geometry {
         return new Vector(cx / crossLength, cy / crossLength, cz / crossLength);
     }
 
-    /** @return the point the plane was built from */
+    /** {@return the point the plane was built from} */
     public Point3D getQ0() {
         return q0;
     }
 
-    /** @return the unit normal */
+    /** {@return the unit normal} */
     public Vector getNormal() {
         return normal;
     }

@@ -33,6 +33,10 @@ public final class ShadowFrustum {
     /** Whether the last {@link #set} succeeded: until one does, every box and plane may meet the pyramid. */
     private boolean valid;
 
+    /** Creates the scratch space of a pyramid; {@link #set} places it. */
+    public ShadowFrustum() {
+    }
+
     /**
      * Sets the pyramid from an apex to the parallelogram c ± a ± b.
      *

@@ -26,6 +26,7 @@ public class Sphere extends Geometry {
      *
      * @param center the centre
      * @param radius the radius, positive
+     * @throws IllegalArgumentException when the centre is null or the radius is not positive
      */
     public Sphere(Point3D center, double radius) {
         this.center = requireNonNull(center, "sphere center");
@@ -36,12 +37,24 @@ public class Sphere extends Geometry {
         this.radiusSquared = radius * radius;
     }
 
-    /** @return the centre */
+    /**
+     * Creates a sphere, radius first: the course's other order, the same sphere as
+     * {@link #Sphere(Point3D, double)}.
+     *
+     * @param radius the radius, positive
+     * @param center the centre
+     * @throws IllegalArgumentException when the centre is null or the radius is not positive
+     */
+    public Sphere(double radius, Point3D center) {
+        this(center, radius);
+    }
+
+    /** {@return the centre} */
     public Point3D getCenter() {
         return center;
     }
 
-    /** @return the radius */
+    /** {@return the radius} */
     public double getRadius() {
         return radius;
     }

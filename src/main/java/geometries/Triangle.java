@@ -5,8 +5,11 @@ import primitives.Point3D;
 import static primitives.Util.alignZero;
 
 /**
- * A triangle: a polygon of three vertices, intersected by the Möller–Trumbore test on precomputed
- * edges. Like every polygon it is closed: its edges and vertices are hit.
+ * A triangle: a polygon of three vertices. Like every {@link Polygon} it has two edge rules: the
+ * course's queries ({@link #findIntersections}, {@link #findGeoIntersections}) take it as open (a ray
+ * through an edge, a vertex or an edge's continuation misses), and the renderer's path takes it as
+ * closed, by the Möller–Trumbore test on precomputed edges, so that triangles sharing an edge leave no
+ * seam.
  */
 public class Triangle extends Polygon {
     /** Tolerance on the barycentric coordinates, so that neighbours sharing an edge leave no seam. */

@@ -25,18 +25,30 @@ public class Tube extends Geometry {
      *
      * @param axisRay the axis
      * @param radius  the radius, positive
+     * @throws IllegalArgumentException when the axis is null or the radius is not positive
      */
     public Tube(Ray axisRay, double radius) {
         this.axisRay = requireNonNull(axisRay, "tube axis ray");
         this.radius = requirePositive(radius, "tube radius");
     }
 
-    /** @return the axis */
+    /**
+     * Creates a tube, radius first: the course's other order, the same tube as {@link #Tube(Ray, double)}.
+     *
+     * @param radius  the radius, positive
+     * @param axisRay the axis
+     * @throws IllegalArgumentException when the axis is null or the radius is not positive
+     */
+    public Tube(double radius, Ray axisRay) {
+        this(axisRay, radius);
+    }
+
+    /** {@return the axis} */
     public Ray getAxisRay() {
         return axisRay;
     }
 
-    /** @return the radius */
+    /** {@return the radius} */
     public double getRadius() {
         return radius;
     }

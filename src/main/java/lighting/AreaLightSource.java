@@ -8,16 +8,16 @@ import primitives.Vector;
  * sides along the unit vectors {@link #getU()} and {@link #getV()}. Soft shadows sample this square.
  */
 public interface AreaLightSource extends LightSource {
-    /** @return the length of the square's edge, 0 for a light with no area */
+    /** {@return the length of the square's edge, 0 for a light with no area} */
     double getEdges();
 
-    /** @return the centre of the square */
+    /** {@return the centre of the square} */
     Point3D getCenter();
 
-    /** @return the unit vector along one side of the square, or null when it was not set (see {@link #getU(Point3D)}) */
+    /** {@return the unit vector along one side of the square, or null when it was not set (see {@link #getU(Point3D)})} */
     Vector getU();
 
-    /** @return the unit vector along the other side of the square, or null when it was not set (see {@link #getV(Point3D)}) */
+    /** {@return the unit vector along the other side of the square, or null when it was not set (see {@link #getV(Point3D)})} */
     Vector getV();
 
     /**

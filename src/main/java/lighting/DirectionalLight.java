@@ -23,7 +23,7 @@ public class DirectionalLight extends Light implements LightSource {
         this.direction = requireNonNull(direction, "light direction").normalized();
     }
 
-    /** @return the unit direction the light shines to */
+    /** {@return the unit direction the light shines to} */
     public Vector getDirection() {
         return direction;
     }

@@ -20,7 +20,7 @@ public abstract class Light {
         this.intensity = requireNonNull(intensity, "light intensity");
     }
 
-    /** @return the light's intensity */
+    /** {@return the light's intensity} */
     public Color getIntensity() {
         return intensity;
     }

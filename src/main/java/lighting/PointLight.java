@@ -129,22 +129,22 @@ public class PointLight extends Light implements AreaLightSource {
         return u != null;
     }
 
-    /** @return the light's position */
+    /** {@return the light's position} */
     public Point3D getPosition() {
         return position;
     }
 
-    /** @return the constant attenuation factor */
+    /** {@return the constant attenuation factor} */
     public double getKc() {
         return kC;
     }
 
-    /** @return the linear attenuation factor */
+    /** {@return the linear attenuation factor} */
     public double getKl() {
         return kL;
     }
 
-    /** @return the quadratic attenuation factor */
+    /** {@return the quadratic attenuation factor} */
     public double getKq() {
         return kQ;
     }
@@ -176,7 +176,7 @@ public class PointLight extends Light implements AreaLightSource {
         return edges;
     }
 
-    /** @return the light's position, the centre of its square */
+    /** {@return the light's position, the centre of its square} */
     @Override
     public Point3D getCenter() {
         return position;

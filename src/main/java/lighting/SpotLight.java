@@ -73,26 +73,26 @@ public class SpotLight extends PointLight {
         return this;
     }
 
-    /** @return the set U, or when it was not set a unit vector orthogonal to the beam's direction */
+    /** {@return the set U, or when it was not set a unit vector orthogonal to the beam's direction} */
     @Override
     public Vector getU() {
         Vector u = super.getU();
         return u != null ? u : squareU;
     }
 
-    /** @return the set V, or when it was not set direction × U */
+    /** {@return the set V, or when it was not set direction × U} */
     @Override
     public Vector getV() {
         Vector v = super.getV();
         return v != null ? v : squareV;
     }
 
-    /** @return the unit direction of the beam's axis */
+    /** {@return the unit direction of the beam's axis} */
     public Vector getDirection() {
         return direction;
     }
 
-    /** @return the narrow-beam power */
+    /** {@return the narrow-beam power} */
     public double getNarrowBeam() {
         return narrowBeam;
     }

@@ -40,17 +40,17 @@ public class Color {
         this(Util.requireNonNull(other, "colour").getRed(), other.getGreen(), other.getBlue());
     }
 
-    /** @return the red component */
+    /** {@return the red component} */
     public double getR() {
         return r;
     }
 
-    /** @return the green component */
+    /** {@return the green component} */
     public double getG() {
         return g;
     }
 
-    /** @return the blue component */
+    /** {@return the blue component} */
     public double getB() {
         return b;
     }
@@ -105,7 +105,7 @@ public class Color {
         return new Color(Math.min(r, Double.MAX_VALUE), Math.min(g, Double.MAX_VALUE), Math.min(b, Double.MAX_VALUE));
     }
 
-    /** @return the AWT colour, each component truncated to an integer and clamped to 0..255 */
+    /** {@return the AWT colour, each component truncated to an integer and clamped to 0..255} */
     public java.awt.Color getColor() {
         return new java.awt.Color(clamp(r), clamp(g), clamp(b));
     }

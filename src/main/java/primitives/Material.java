@@ -13,6 +13,10 @@ public class Material {
     private double kR;
     private int nShininess;
 
+    /** Creates a material with every factor 0: a black body that neither reflects nor lets light through. */
+    public Material() {
+    }
+
     /**
      * Sets the diffuse factor.
      *
@@ -70,27 +74,27 @@ public class Material {
         return this;
     }
 
-    /** @return the diffuse factor */
+    /** {@return the diffuse factor} */
     public double getKd() {
         return kD;
     }
 
-    /** @return the specular factor */
+    /** {@return the specular factor} */
     public double getKs() {
         return kS;
     }
 
-    /** @return the transparency factor */
+    /** {@return the transparency factor} */
     public double getKt() {
         return kT;
     }
 
-    /** @return the reflection factor */
+    /** {@return the reflection factor} */
     public double getKr() {
         return kR;
     }
 
-    /** @return the shininess exponent */
+    /** {@return the shininess exponent} */
     public int getShininess() {
         return nShininess;
     }

@@ -29,17 +29,17 @@ public class Point3D {
         this.z = requireFinite(z, "point z coordinate");
     }
 
-    /** @return the x coordinate */
+    /** {@return the x coordinate} */
     public double getX() {
         return x;
     }
 
-    /** @return the y coordinate */
+    /** {@return the y coordinate} */
     public double getY() {
         return y;
     }
 
-    /** @return the z coordinate */
+    /** {@return the z coordinate} */
     public double getZ() {
         return z;
     }

@@ -46,12 +46,12 @@ public class Ray {
         this.dir = direction.normalized();
     }
 
-    /** @return the start point */
+    /** {@return the start point} */
     public Point3D getP0() {
         return p0;
     }
 
-    /** @return the unit direction */
+    /** {@return the unit direction} */
     public Vector getDir() {
         return dir;
     }

@@ -47,22 +47,22 @@ public class Vector {
         this(requireNonNull(head, "vector head").x, head.y, head.z);
     }
 
-    /** @return the x component */
+    /** {@return the x component} */
     public double getX() {
         return x;
     }
 
-    /** @return the y component */
+    /** {@return the y component} */
     public double getY() {
         return y;
     }
 
-    /** @return the z component */
+    /** {@return the z component} */
     public double getZ() {
         return z;
     }
 
-    /** @return the vector's head, the point it reaches from the origin */
+    /** {@return the vector's head, the point it reaches from the origin} */
     public Point3D getHead() {
         return new Point3D(x, y, z);
     }
@@ -149,7 +149,7 @@ public class Vector {
         return cx * cx + cy * cy + cz * cz <= sine2 * (ax * ax + ay * ay + az * az) * (bx * bx + by * by + bz * bz);
     }
 
-    /** @return the largest magnitude of the components, positive for any vector */
+    /** {@return the largest magnitude of the components, positive for any vector} */
     private double maxAbs() {
         return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
@@ -177,12 +177,12 @@ public class Vector {
         return new Vector(x / m, y / m, z / m).normalize();
     }
 
-    /** @return the squared length */
+    /** {@return the squared length} */
     public double lengthSquared() {
         return x * x + y * y + z * z;
     }
 
-    /** @return the length */
+    /** {@return the length} */
     public double length() {
         return Math.sqrt(lengthSquared());
     }
@@ -209,7 +209,7 @@ public class Vector {
         return this;
     }
 
-    /** @return a new unit vector in the direction of this one */
+    /** {@return a new unit vector in the direction of this one} */
     public Vector normalized() {
         return new Vector(x, y, z).normalize();
     }

@@ -44,11 +44,12 @@ public class Camera {
     }
 
     /**
-     * Sets the size of the view plane.
+     * Sets the size of the view plane (the report's name; {@link #setViewPlaneSize} is the course's).
      *
      * @param width  its width, positive
      * @param height its height, positive
      * @return this camera
+     * @throws IllegalArgumentException when a size is not positive or not finite
      */
     public Camera setVpSize(double width, double height) {
         this.width = requirePositive(width, "view plane width");
@@ -57,47 +58,73 @@ public class Camera {
     }
 
     /**
-     * Sets the distance from the camera to the view plane.
+     * Sets the size of the view plane: the course's name for {@link #setVpSize}, the same setter.
+     *
+     * @param width  its width, positive
+     * @param height its height, positive
+     * @return this camera
+     * @throws IllegalArgumentException when a size is not positive or not finite
+     */
+    public Camera setViewPlaneSize(double width, double height) {
+        return setVpSize(width, height);
+    }
+
+    /**
+     * Sets the distance from the camera to the view plane (the report's name; {@link #setDistance}
+     * is the course's).
      *
      * @param distance the distance, positive
      * @return this camera
+     * @throws IllegalArgumentException when the distance is not positive or not finite
      */
     public Camera setVpDistance(double distance) {
         this.distance = requirePositive(distance, "view plane distance");
         return this;
     }
 
-    /** @return the position */
+    /**
+     * Sets the distance from the camera to the view plane: the course's name for
+     * {@link #setVpDistance}, the same setter.
+     *
+     * @param distance the distance, positive
+     * @return this camera
+     * @throws IllegalArgumentException when the distance is not positive or not finite
+     */
+    public Camera setDistance(double distance) {
+        return setVpDistance(distance);
+    }
+
+    /** {@return the position} */
     public Point3D getP0() {
         return p0;
     }
 
-    /** @return the unit forward direction */
+    /** {@return the unit forward direction} */
     public Vector getVTo() {
         return vTo;
     }
 
-    /** @return the unit up direction */
+    /** {@return the unit up direction} */
     public Vector getVUp() {
         return vUp;
     }
 
-    /** @return the unit right direction, vTo × vUp */
+    /** {@return the unit right direction, vTo × vUp} */
     public Vector getVRight() {
         return vRight;
     }
 
-    /** @return the view plane width (0 until set) */
+    /** {@return the view plane width (0 until set)} */
     public double getWidth() {
         return width;
     }
 
-    /** @return the view plane height (0 until set) */
+    /** {@return the view plane height (0 until set)} */
     public double getHeight() {
         return height;
     }
 
-    /** @return the view plane distance (0 until set) */
+    /** {@return the view plane distance (0 until set)} */
     public double getDistance() {
         return distance;
     }

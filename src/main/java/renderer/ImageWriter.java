@@ -90,17 +90,17 @@ public class ImageWriter {
                     + MAX_PIXELS + " pixels");
     }
 
-    /** @return the number of columns */
+    /** {@return the number of columns} */
     public int getNx() {
         return nX;
     }
 
-    /** @return the number of rows */
+    /** {@return the number of rows} */
     public int getNy() {
         return nY;
     }
 
-    /** @return the file the image is written to */
+    /** {@return the file the image is written to} */
     public Path getPath() {
         return folder.resolve(imageName + EXTENSION);
     }
@@ -129,6 +129,20 @@ public class ImageWriter {
     public java.awt.Color getPixel(int xIndex, int yIndex) {
         checkPixel(xIndex, yIndex);
         return new java.awt.Color(image.getRGB(xIndex, yIndex));
+    }
+
+    /**
+     * Copies the picture as it is now into another image of the same size (a preview's frame).
+     *
+     * @param target the image to copy into
+     * @throws IllegalArgumentException when the target is null or of another size
+     */
+    public void copyTo(BufferedImage target) {
+        requireNonNull(target, "target image");
+        if (target.getWidth() != nX || target.getHeight() != nY)
+            throw new IllegalArgumentException("target image is " + target.getWidth() + "x" + target.getHeight()
+                    + ", not " + nX + "x" + nY);
+        target.getRaster().setRect(image.getRaster());
     }
 
     private void checkPixel(int xIndex, int yIndex) {

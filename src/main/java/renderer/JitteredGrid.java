@@ -92,17 +92,17 @@ public final class JitteredGrid {
         return c + 1;
     }
 
-    /** @return k, the number of cells along each side */
+    /** {@return k, the number of cells along each side} */
     public int getSqrtSamples() {
         return sqrtSamples;
     }
 
-    /** @return k², the number of cells and so of sample points */
+    /** {@return k², the number of cells and so of sample points} */
     public int getSamplesCount() {
         return sqrtSamples * sqrtSamples;
     }
 
-    /** @return the number of cells on the grid's border, which come first: 4(k − 1), or 1 when k is 1 */
+    /** {@return the number of cells on the grid's border, which come first: 4(k − 1), or 1 when k is 1} */
     public int getOutlineCount() {
         return outlineCount;
     }

@@ -105,37 +105,37 @@ public abstract class RayTracerBase {
         return this;
     }
 
-    /** @return the square root of the number of shadow rays per light */
+    /** {@return the square root of the number of shadow rays per light} */
     public int getSqrtBeamNum() {
         return beamGrid.getSqrtSamples();
     }
 
-    /** @return the grid the shadow rays' points on a light's square come from */
+    /** {@return the grid the shadow rays' points on a light's square come from} */
     public JitteredGrid getBeamGrid() {
         return beamGrid;
     }
 
-    /** @return whether soft shadows are on */
+    /** {@return whether soft shadows are on} */
     public boolean isSoftShadows() {
         return softShadows;
     }
 
-    /** @return whether adaptive soft shadows are on */
+    /** {@return whether adaptive soft shadows are on} */
     public boolean isAdaptiveSoftShadows() {
         return adaptiveSoftShadows;
     }
 
-    /** @return the seed of the random streams */
+    /** {@return the seed of the random streams} */
     public long getSeed() {
         return seed;
     }
 
-    /** @return the number of rays traced from the camera by renders of this ray tracer so far */
+    /** {@return the number of rays traced from the camera by renders of this ray tracer so far} */
     public long getPrimaryRaysCount() {
         return sum(state -> state.primaryRays);
     }
 
-    /** @return the number of shadow rays traced by this ray tracer so far */
+    /** {@return the number of shadow rays traced by this ray tracer so far} */
     public long getShadowRaysCount() {
         return sum(state -> state.shadowRays);
     }
@@ -172,7 +172,7 @@ public abstract class RayTracerBase {
         return state;
     }
 
-    /** @return the calling thread's state */
+    /** {@return the calling thread's state} */
     ThreadState threadState() {
         return threadState.get();
     }

@@ -318,7 +318,7 @@ public class RayTracerBasic extends RayTracerBase {
             return bvh.gather(query) ? Bundle.GATHERED : Bundle.OPEN;
         }
 
-        /** @return true when no ray of the bundle can be blocked: each lets all the light through */
+        /** {@return true when no ray of the bundle can be blocked: each lets all the light through} */
         boolean isOpen() {
             return bundle == Bundle.OPEN;
         }

@@ -29,6 +29,10 @@ public class Render {
     private JitteredGrid pixelGrid;
     private LongConsumer progressListener;
 
+    /** Creates a render with nothing set yet: set an image writer, a camera and a ray tracer before rendering. */
+    public Render() {
+    }
+
     /**
      * Sets the image to render into.
      *
@@ -40,7 +44,7 @@ public class Render {
         return this;
     }
 
-    /** @return the image rendered into (null until set) */
+    /** {@return the image rendered into (null until set)} */
     public ImageWriter getImageWriter() {
         return imageWriter;
     }
@@ -67,7 +71,7 @@ public class Render {
         return this;
     }
 
-    /** @return the ray tracer (null until set) */
+    /** {@return the ray tracer (null until set)} */
     public RayTracerBase getRayTracer() {
         return rayTracer;
     }
@@ -139,7 +143,7 @@ public class Render {
         return this;
     }
 
-    /** @return k, the square root of the number of rays per pixel */
+    /** {@return k, the square root of the number of rays per pixel} */
     public int getAntiAliasing() {
         return pixelGrid == null ? 1 : pixelGrid.getSqrtSamples();
     }

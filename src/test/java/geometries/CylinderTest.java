@@ -2,6 +2,7 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSameRejection;
 
 import java.util.List;
 
@@ -58,6 +59,33 @@ class CylinderTest {
         // TC11: zero height is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Cylinder(axis, 1, 0), "TC11: zero height accepted");
         assertMessage(e, "height", "TC11");
+    }
+
+    /**
+     * Test method for {@link geometries.Cylinder#Cylinder(double, primitives.Ray, double)}, the course's
+     * radius-first order.
+     */
+    @Test
+    void testConstructorRadiusFirst() {
+        Ray axis = new Ray(new Point3D(0, 0, 1), new Vector(0, 0, 5));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the same axis, radius 1 and height 2 as the axis-first constructor
+        Cylinder c = new Cylinder(1, axis, 2);
+        assertEquals(axis, c.getAxisRay(), "TC01: wrong axis ray");
+        assertEquals(1, c.getRadius(), 1e-10, "TC01: wrong radius");
+        assertEquals(2, c.getHeight(), 1e-10, "TC01: wrong height");
+        // TC02: the same intersections as axis first, for a ray down the axis: the caps (0,0,3) and (0,0,1)
+        Ray ray = new Ray(new Point3D(0, 0, 5), new Vector(0, 0, -1));
+        assertEquals(new Cylinder(axis, 1, 2).findIntersections(ray), c.findIntersections(ray),
+                "TC02: different intersections");
+        // TC03: negative radius or height: the same messages as axis first
+        assertSameRejection(() -> new Cylinder(axis, -1, 2), () -> new Cylinder(-1, axis, 2), "TC03");
+        assertSameRejection(() -> new Cylinder(axis, 1, -2), () -> new Cylinder(1, axis, -2), "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC10: zero radius or height: the same messages as axis first
+        assertSameRejection(() -> new Cylinder(axis, 0, 2), () -> new Cylinder(0, axis, 2), "TC10");
+        assertSameRejection(() -> new Cylinder(axis, 1, 0), () -> new Cylinder(1, axis, 0), "TC10");
     }
 
     /**

@@ -171,21 +171,18 @@ class PolygonTest {
                 "TC05: wrong intersection point for an oblique ray");
 
         // ===== Boundary Values Tests =====
-        // TC11: ray through the middle of edge AB: the polygon is closed, so it hits (1 point (0.5,0,0.5))
-        assertEquals(List.of(new Point3D(0.5, 0, 0.5)), polygon.findIntersections(down(0.5, 0)),
-                "TC11: a ray through an edge must hit the closed polygon");
+        // The course's query takes the polygon as open: edges and vertices are not hit.
+        // TC11: ray through the middle of edge AB (0 points)
+        assertNull(polygon.findIntersections(down(0.5, 0)), "TC11: a ray through an edge must miss the open polygon");
 
-        // TC12: ray through the middle of edge CD (1 point (-0.5,1,0.5))
-        assertEquals(List.of(new Point3D(-0.5, 1, 0.5)), polygon.findIntersections(down(-0.5, 1)),
-                "TC12: a ray through an edge must hit the closed polygon");
+        // TC12: ray through the middle of edge CD (0 points)
+        assertNull(polygon.findIntersections(down(-0.5, 1)), "TC12: a ray through an edge must miss the open polygon");
 
-        // TC13: ray through vertex B (1 point (1,0,0))
-        assertEquals(List.of(new Point3D(1, 0, 0)), polygon.findIntersections(down(1, 0)),
-                "TC13: a ray through a vertex must hit the closed polygon");
+        // TC13: ray through vertex B (0 points)
+        assertNull(polygon.findIntersections(down(1, 0)), "TC13: a ray through a vertex must miss the open polygon");
 
-        // TC14: ray through vertex D (1 point (-1,1,1))
-        assertEquals(List.of(new Point3D(-1, 1, 1)), polygon.findIntersections(down(-1, 1)),
-                "TC14: a ray through a vertex must hit the closed polygon");
+        // TC14: ray through vertex D (0 points)
+        assertNull(polygon.findIntersections(down(-1, 1)), "TC14: a ray through a vertex must miss the open polygon");
 
         // TC15: ray on the continuation of edge AB beyond B (0 points)
         assertNull(polygon.findIntersections(down(2, 0)), "TC15: a ray on an edge's continuation must give null");
@@ -232,28 +229,105 @@ class PolygonTest {
     }
 
     /**
-     * Two closed quadrangles sharing an edge leave no seam: every ray aimed at the shared edge hits one of them.
+     * Two quadrangles sharing an edge leave no seam on the renderer's path: every ray aimed at the
+     * shared edge hits one of them there, while the course's query misses both.
      */
     @Test
     void testSharedEdgeNoSeam() {
-        // ===== Boundary Values Tests =====
-        // TC11: rays from an oblique eye at 1001 points along the shared edge x = 1 all hit (at least 1 point)
         Polygon left = new Polygon(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(1, 1, 0), new Point3D(0, 1, 0));
         Polygon right = new Polygon(new Point3D(1, 0, 0), new Point3D(2.5, 0, 0), new Point3D(2.5, 1, 0),
                 new Point3D(1, 1, 0));
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(new Geometries(left, right));
         Point3D eye = new Point3D(0.31, -0.77, 2.9);
+
+        // ===== Boundary Values Tests =====
+        // TC11: rays from an oblique eye at 1001 points along the shared edge x = 1: the renderer's path
+        // hits one of the polygons at the point, the course's query hits neither (null)
         for (int k = 0; k <= 1000; ++k) {
             Point3D target = new Point3D(1, k / 1000.0, 0);
             Ray ray = new Ray(eye, target.subtract(eye));
-            List<Point3D> l = left.findIntersections(ray);
-            List<Point3D> r = right.findIntersections(ray);
-            assertTrue(l != null || r != null, "TC11: seam between the polygons at " + target);
-            Point3D hit = l != null ? l.get(0) : r.get(0);
-            assertEquals(target.getX(), hit.getX(), 1e-9, "TC11: wrong hit point x at " + target);
-            assertEquals(target.getY(), hit.getY(), 1e-9, "TC11: wrong hit point y at " + target);
-            assertEquals(0, hit.getZ(), 1e-9, "TC11: wrong hit point z at " + target);
+            GeoPoint hit = bvh.closestHit(ray, bvh.newQuery());
+            assertNotNull(hit, "TC11: seam between the polygons at " + target);
+            assertEquals(target.getX(), hit.point.getX(), 1e-9, "TC11: wrong hit point x at " + target);
+            assertEquals(target.getY(), hit.point.getY(), 1e-9, "TC11: wrong hit point y at " + target);
+            assertEquals(0, hit.point.getZ(), 1e-9, "TC11: wrong hit point z at " + target);
+            assertNull(left.findIntersections(ray), "TC11: the course's query must miss the left edge at " + target);
+            assertNull(right.findIntersections(ray), "TC11: the course's query must miss the right edge at " + target);
         }
-        assertNotNull(left.findIntersections(new Ray(eye, new Point3D(1, 1, 0).subtract(eye))),
-                "TC11: the shared corner must hit the closed polygon");
+    }
+
+    /**
+     * The two edge rules on polygons of several shapes and sizes: the course's query misses a ray
+     * through an edge, a vertex or an edge's continuation, and hits one just inside; the renderer's
+     * path hits the edges and vertices too.
+     */
+    @Test
+    void testEdgeRules() {
+        Point3D[] pentagon = new Point3D[5];
+        for (int k = 0; k < 5; ++k) {
+            double angle = 2 * Math.PI * k / 5;
+            pentagon[k] = new Point3D(3 + 2 * Math.cos(angle), -1 + 2 * Math.sin(angle), 0.5 * Math.cos(angle));
+        }
+        Point3D[] hexagon = new Point3D[6];
+        for (int k = 0; k < 6; ++k) {
+            double angle = 2 * Math.PI * k / 6 + 0.3;
+            hexagon[k] = new Point3D(1000 * Math.cos(angle), 250, 1000 * Math.sin(angle));
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: the course's parallelogram ABCD seen from an oblique eye
+        assertEdgeRules(polygon, new Point3D(0.7, -2.1, 4.4), "TC11");
+        // TC12: a tilted regular pentagon of radius 2, seen from the other side
+        assertEdgeRules(new Polygon(pentagon), new Point3D(2.2, -0.3, -6.1), "TC12");
+        // TC13: a regular hexagon of radius 1000, seen from far above
+        assertEdgeRules(new Polygon(hexagon), new Point3D(123, 4000, -77), "TC13");
+        // TC14: a thin kite 1e-3 across
+        assertEdgeRules(new Polygon(new Point3D(0, 0, 0), new Point3D(1e-3, 2e-4, 0), new Point3D(1.5e-3, 1e-3, 0),
+                new Point3D(2e-4, 1e-3, 0)), new Point3D(3e-4, -1e-3, 2e-3), "TC14");
+    }
+
+    /**
+     * Asserts both edge rules of a polygon, with oblique rays from an eye off its plane: for every
+     * edge, rays through its two vertices, a point of it and its continuation beyond both ends miss
+     * on the course's query; the vertices and the point are hit on the renderer's path (a
+     * {@link BoundingVolumeHierarchy} over the polygon) and the continuations are not; a ray a
+     * millionth of the polygon's size inside the edge's point is hit by both.
+     *
+     * @param polygon the polygon
+     * @param eye     where the rays start, off the polygon's plane
+     * @param tc      the test-case label
+     */
+    static void assertEdgeRules(Polygon polygon, Point3D eye, String tc) {
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(polygon);
+        List<Point3D> v = polygon.getVertices();
+        double size = 0;
+        for (int k = 0; k < v.size(); ++k)
+            size = Math.max(size, v.get(k).distance(v.get((k + 1) % v.size())));
+        Vector normal = polygon.getNormal(v.get(0));
+        for (int k = 0; k < v.size(); ++k) {
+            Point3D from = v.get(k);
+            Vector edge = v.get((k + 1) % v.size()).subtract(from);
+            Point3D onEdge = from.add(edge.scale(0.3183));
+            String at = tc + ": edge " + k;
+            for (Point3D target : List.of(from, onEdge)) {
+                Ray ray = new Ray(eye, target.subtract(eye));
+                assertNull(polygon.findIntersections(ray), at + ": the course's query must miss " + target);
+                GeoPoint hit = bvh.closestHit(ray, bvh.newQuery());
+                assertNotNull(hit, at + ": the renderer's path must hit " + target);
+                assertEquals(0, hit.point.distance(target), 1e-9 * edge.length(), at + ": wrong hit point");
+            }
+            for (Point3D target : List.of(from.add(edge.scale(-0.5)), from.add(edge.scale(1.7)))) {
+                Ray ray = new Ray(eye, target.subtract(eye));
+                assertNull(polygon.findIntersections(ray), at + ": a ray on the continuation must miss " + target);
+                assertNull(bvh.closestHit(ray, bvh.newQuery()), at + ": a ray on the continuation must miss " + target);
+            }
+            Vector inward = normal.crossProduct(edge).normalized();
+            if (inward.dotProduct(v.get((k + 2) % v.size()).subtract(from)) < 0)
+                inward = inward.scale(-1);
+            Point3D inside = onEdge.add(inward.scale(1e-6 * size));
+            Ray ray = new Ray(eye, inside.subtract(eye));
+            assertNotNull(polygon.findIntersections(ray), at + ": the course's query must hit just inside " + inside);
+            assertNotNull(bvh.closestHit(ray, bvh.newQuery()), at + ": the renderer's path must hit just inside " + inside);
+        }
     }
 }

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSameRejection;
 
 import java.util.List;
 
@@ -72,6 +73,31 @@ class SphereTest {
         e = assertThrows(IllegalArgumentException.class,
                 () -> new Sphere(new Point3D(1, 2, 3), 0), "TC11: zero radius must throw");
         assertMessage(e, "radius", "TC11");
+    }
+
+    /**
+     * Test method for {@link geometries.Sphere#Sphere(double, primitives.Point3D)}, the course's radius-first order.
+     */
+    @Test
+    void testConstructorRadiusFirst() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the same centre (1,2,3) and radius 4.5 as the centre-first constructor
+        Sphere s = new Sphere(4.5, new Point3D(1, 2, 3));
+        assertEquals(new Point3D(1, 2, 3), s.getCenter(), "TC01: wrong centre");
+        assertEquals(4.5, s.getRadius(), 1e-10, "TC01: wrong radius");
+        // TC02: the same intersections as the course's sphere built centre first: (0,0,0) and (2,0,0)
+        Ray ray = new Ray(new Point3D(-1, 0, 0), new Vector(1, 0, 0));
+        assertEquals(sphere.findIntersections(ray), new Sphere(1, new Point3D(1, 0, 0)).findIntersections(ray),
+                "TC02: different intersections");
+        // TC03: bad radius (negative, NaN) or a null centre: the same messages as centre first
+        assertSameRejection(() -> new Sphere(new Point3D(1, 2, 3), -1), () -> new Sphere(-1, new Point3D(1, 2, 3)), "TC03");
+        assertSameRejection(() -> new Sphere(new Point3D(1, 2, 3), Double.NaN),
+                () -> new Sphere(Double.NaN, new Point3D(1, 2, 3)), "TC03");
+        assertSameRejection(() -> new Sphere(null, 1), () -> new Sphere(1, null), "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: zero radius: the same message as centre first
+        assertSameRejection(() -> new Sphere(new Point3D(1, 2, 3), 0), () -> new Sphere(0, new Point3D(1, 2, 3)), "TC11");
     }
 
     /**

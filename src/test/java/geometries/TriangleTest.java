@@ -2,6 +2,7 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -13,13 +14,15 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
+import geometries.BoundingVolumeHierarchy.Query;
 import geometries.Intersectable.GeoPoint;
 import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
 
 /**
- * Unit tests for {@link geometries.Triangle}, including watertightness of triangles sharing an edge.
+ * Unit tests for {@link geometries.Triangle}: the course's open edges on its own queries, and
+ * watertightness of triangles sharing an edge on the renderer's path.
  */
 class TriangleTest {
     private static final Point3D P1 = new Point3D(1, 0, 0);
@@ -125,21 +128,18 @@ class TriangleTest {
                 "TC06: wrong intersection point for an oblique ray");
 
         // ===== Boundary Values Tests =====
-        // TC11: ray through the middle of edge P1P2: triangles are closed, so it hits (1 point (0.5,0.5,0))
-        assertEquals(List.of(new Point3D(0.5, 0.5, 0)), triangle.findIntersections(down(0.5, 0.5)),
-                "TC11: a ray through an edge must hit the closed triangle");
+        // The course's query takes the triangle as open: edges and vertices are not hit.
+        // TC11: ray through the middle of edge P1P2 (0 points)
+        assertNull(triangle.findIntersections(down(0.5, 0.5)), "TC11: a ray through an edge must miss the open triangle");
 
-        // TC12: ray through edge P3P1 (1 point (0.3,0,0.7))
-        assertEquals(List.of(new Point3D(0.3, 0, 0.7)), triangle.findIntersections(down(0.3, 0)),
-                "TC12: a ray through an edge must hit the closed triangle");
+        // TC12: ray through edge P3P1 (0 points)
+        assertNull(triangle.findIntersections(down(0.3, 0)), "TC12: a ray through an edge must miss the open triangle");
 
-        // TC13: ray through vertex P1 (1 point (1,0,0))
-        assertEquals(List.of(new Point3D(1, 0, 0)), triangle.findIntersections(down(1, 0)),
-                "TC13: a ray through a vertex must hit the closed triangle");
+        // TC13: ray through vertex P1 (0 points)
+        assertNull(triangle.findIntersections(down(1, 0)), "TC13: a ray through a vertex must miss the open triangle");
 
-        // TC14: ray through vertex P3 (1 point (0,0,1))
-        assertEquals(List.of(new Point3D(0, 0, 1)), triangle.findIntersections(down(0, 0)),
-                "TC14: a ray through a vertex must hit the closed triangle");
+        // TC14: ray through vertex P3 (0 points)
+        assertNull(triangle.findIntersections(down(0, 0)), "TC14: a ray through a vertex must miss the open triangle");
 
         // TC15: ray on the continuation of edge P3P1 beyond P1 (0 points)
         assertNull(triangle.findIntersections(down(2, 0)), "TC15: a ray on an edge's continuation must give null");
@@ -186,19 +186,19 @@ class TriangleTest {
 
     /**
      * Casts every ray of a grid from an eye at the square split into two triangles along a diagonal and
-     * asserts that each hits at least one of them.
+     * asserts that the renderer's path hits each of them.
      *
      * @param label  the case label
-     * @param t1     first triangle
-     * @param t2     second triangle
+     * @param pair   the renderer's path over the two triangles
      * @param eye    the rays' start
      * @param corner the square's corner at grid (0,0)
      * @param u      the square's edge from the corner along the grid's first index
      * @param v      the square's edge from the corner along the grid's second index
      * @param n      the number of cells along each edge (the grid has (n+1)^2 targets)
      */
-    private static void assertNoSeam(String label, Triangle t1, Triangle t2, Point3D eye, Point3D corner, Vector u,
+    private static void assertNoSeam(String label, BoundingVolumeHierarchy pair, Point3D eye, Point3D corner, Vector u,
             Vector v, int n) {
+        Query query = pair.newQuery();
         for (int i = 0; i <= n; ++i)
             for (int j = 0; j <= n; ++j) {
                 Point3D target = corner;
@@ -206,14 +206,14 @@ class TriangleTest {
                     target = target.add(u.scale((double) i / n));
                 if (j > 0)
                     target = target.add(v.scale((double) j / n));
-                Ray ray = new Ray(eye, target.subtract(eye));
-                assertTrue(t1.findIntersections(ray) != null || t2.findIntersections(ray) != null,
+                assertNotNull(pair.closestHit(new Ray(eye, target.subtract(eye)), query),
                         label + ": no triangle hit at grid (" + i + "," + j + "), target " + target);
             }
     }
 
     /**
-     * Two triangles sharing a diagonal of a square are watertight: no ray aimed at the square slips between them.
+     * Two triangles sharing a diagonal of a square are watertight on the renderer's path (a
+     * {@link BoundingVolumeHierarchy} over them): no ray aimed at the square slips between them.
      */
     @Test
     void testWatertightSharedDiagonal() {
@@ -224,15 +224,17 @@ class TriangleTest {
         Point3D d = new Point3D(0, 1, 0);
         Triangle t1 = new Triangle(a, b, c);
         Triangle t2 = new Triangle(a, c, d);
+        BoundingVolumeHierarchy pair = BoundingVolumeHierarchy.build(new Geometries(t1, t2));
+        Query query = pair.newQuery();
         Vector u = new Vector(1, 0, 0);
         Vector v = new Vector(0, 1, 0);
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a 200x200 grid (201x201 targets, diagonal and border included) from an oblique eye: every ray hits
-        assertNoSeam("TC01", t1, t2, new Point3D(0.3137, -0.7071, 2.4142), a, u, v, 200);
+        assertNoSeam("TC01", pair, new Point3D(0.3137, -0.7071, 2.4142), a, u, v, 200);
 
         // TC02: the same grid seen from below the square: every ray hits
-        assertNoSeam("TC02", t1, t2, new Point3D(1.7, 0.2, -3.3), a, u, v, 200);
+        assertNoSeam("TC02", pair, new Point3D(1.7, 0.2, -3.3), a, u, v, 200);
 
         // TC03: a tilted square in space with irrational edges, split along its diagonal: every ray hits
         Vector tu = new Vector(Math.sqrt(2), Math.sqrt(3), -Math.PI).normalized().scale(3.7);
@@ -241,23 +243,24 @@ class TriangleTest {
         Point3D tb = ta.add(tu);
         Point3D tc = tb.add(tv);
         Point3D td = ta.add(tv);
-        Triangle s1 = new Triangle(ta, tb, tc);
-        Triangle s2 = new Triangle(ta, tc, td);
+        BoundingVolumeHierarchy tilted = BoundingVolumeHierarchy.build(
+                new Geometries(new Triangle(ta, tb, tc), new Triangle(ta, tc, td)));
         Point3D eye = ta.add(tu.crossProduct(tv).normalized().scale(17)).add(new Vector(1.1, -2.3, 0.7));
-        assertNoSeam("TC03", s1, s2, eye, ta, tu, tv, 200);
+        assertNoSeam("TC03", tilted, eye, ta, tu, tv, 200);
 
-        // TC04: rays aimed at points strictly outside the square miss both triangles (0 points)
+        // TC04: rays aimed at points strictly outside the square miss both triangles, on both paths (0 points)
         Point3D eye4 = new Point3D(0.3137, -0.7071, 2.4142);
         for (Point3D target : List.of(new Point3D(1.01, 0.5, 0), new Point3D(-0.01, 0.5, 0), new Point3D(0.5, 1.01, 0),
                 new Point3D(0.5, -0.01, 0), new Point3D(1.01, 1.01, 0))) {
             Ray ray = new Ray(eye4, target.subtract(eye4));
+            assertNull(pair.closestHit(ray, query), "TC04: ray to " + target + " must miss the pair");
             assertNull(t1.findIntersections(ray), "TC04: ray to " + target + " must miss the first triangle");
             assertNull(t2.findIntersections(ray), "TC04: ray to " + target + " must miss the second triangle");
         }
 
         // ===== Boundary Values Tests =====
         // TC11: 20000 seeded random rays from random eyes on both sides aimed exactly at points of the shared
-        // diagonal: every ray hits at least one triangle, at the diagonal point
+        // diagonal: the renderer's path hits at the diagonal point; the course's query misses both triangles
         Random random = new Random(20240611L);
         for (int k = 0; k < 20000; ++k) {
             double s = random.nextDouble();
@@ -265,27 +268,48 @@ class TriangleTest {
             Point3D from = new Point3D(random.nextDouble() * 6 - 3, random.nextDouble() * 6 - 3,
                     (random.nextBoolean() ? 1 : -1) * (0.1 + random.nextDouble() * 5));
             Ray ray = new Ray(from, target.subtract(from));
-            List<Point3D> h1 = t1.findIntersections(ray);
-            List<Point3D> h2 = t2.findIntersections(ray);
-            assertTrue(h1 != null || h2 != null, "TC11: seam on the diagonal at " + target + " from " + from);
-            Point3D hit = h1 != null ? h1.get(0) : h2.get(0);
-            assertEquals(s, hit.getX(), 1e-9, "TC11: wrong hit x on the diagonal from " + from);
-            assertEquals(s, hit.getY(), 1e-9, "TC11: wrong hit y on the diagonal from " + from);
-            assertEquals(0, hit.getZ(), 1e-9, "TC11: wrong hit z on the diagonal from " + from);
+            GeoPoint hit = pair.closestHit(ray, query);
+            assertNotNull(hit, "TC11: seam on the diagonal at " + target + " from " + from);
+            assertEquals(s, hit.point.getX(), 1e-9, "TC11: wrong hit x on the diagonal from " + from);
+            assertEquals(s, hit.point.getY(), 1e-9, "TC11: wrong hit y on the diagonal from " + from);
+            assertEquals(0, hit.point.getZ(), 1e-9, "TC11: wrong hit z on the diagonal from " + from);
+            assertTrue(t1.findIntersections(ray) == null && t2.findIntersections(ray) == null,
+                    "TC11: the course's query must miss the shared edge at " + target + " from " + from);
         }
 
         // TC12: straight-down rays exactly above the diagonal (the direction has no x, y part): every ray hits
         for (int k = 0; k <= 1000; ++k) {
             double s = k / 1000.0;
-            Ray ray = new Ray(new Point3D(s, s, 1), new Vector(0, 0, -1));
-            assertTrue(t1.findIntersections(ray) != null || t2.findIntersections(ray) != null,
+            assertNotNull(pair.closestHit(new Ray(new Point3D(s, s, 1), new Vector(0, 0, -1)), query),
                     "TC12: seam on the diagonal at (" + s + "," + s + ",0)");
         }
     }
 
     /**
+     * The two edge rules on triangles of several shapes and sizes (see {@link PolygonTest#assertEdgeRules}):
+     * the course's query misses edges, vertices and continuations; the renderer's path, by the
+     * Möller–Trumbore test, hits edges and vertices.
+     */
+    @Test
+    void testEdgeRules() {
+        // ===== Boundary Values Tests =====
+        // TC11: the triangle P1P2P3 seen from an oblique eye
+        PolygonTest.assertEdgeRules(triangle, new Point3D(-0.4, 2.3, 3.1), "TC11");
+        // TC12: the report's first triangle, seen from its camera
+        PolygonTest.assertEdgeRules(new Triangle(new Point3D(-150, -150, -115), new Point3D(150, -150, -135),
+                new Point3D(75, 75, -150)), new Point3D(0, 0, 1000), "TC12");
+        // TC13: a needle 10 long and 0.01 wide, seen from below
+        PolygonTest.assertEdgeRules(new Triangle(new Point3D(0, 0, 0), new Point3D(10, 0.005, 1), new Point3D(10, -0.005, 1)),
+                new Point3D(4, 0.3, -5), "TC13");
+        // TC14: a right triangle 1e-4 across, far from the origin
+        PolygonTest.assertEdgeRules(new Triangle(new Point3D(50, 50, 50), new Point3D(50 + 1e-4, 50, 50),
+                new Point3D(50, 50 + 1e-4, 50)), new Point3D(50.00003, 49.99997, 50.0002), "TC14");
+    }
+
+    /**
      * A triangle and the polygon with the same three vertices agree on hit or miss, and on the point, for
-     * thousands of seeded random rays.
+     * thousands of seeded random rays, on the course's query (the same test) and on the renderer's path
+     * (Möller–Trumbore against the polygon's edge test).
      */
     @Test
     void testAgreesWithPolygon() {
@@ -317,15 +341,33 @@ class TriangleTest {
                 List<Point3D> rt = t.findIntersections(ray);
                 List<Point3D> rp = p.findIntersections(ray);
                 assertEquals(rp == null, rt == null, "TC01: Triangle and Polygon disagree on hit/miss for " + ray);
+                double nt = nearestHit(t, ray);
+                double np = nearestHit(p, ray);
+                assertEquals(np == Geometry.NO_HIT, nt == Geometry.NO_HIT,
+                        "TC01: Triangle and Polygon disagree on hit/miss on the renderer's path for " + ray);
                 if (rt != null) {
                     ++hits;
                     assertEquals(1, rt.size(), "TC01: a triangle is hit at most once");
                     assertEquals(0, rp.get(0).distance(rt.get(0)), 1e-9 * scale,
                             "TC01: Triangle and Polygon disagree on the point for " + ray);
+                    assertEquals(np, nt, 1e-9 * scale, "TC01: Triangle and Polygon disagree on the distance for " + ray);
                 } else
                     ++misses;
             }
         }
         assertTrue(hits > 1000 && misses > 1000, "TC01: the random rays must both hit and miss: " + hits + "/" + misses);
+    }
+
+    /**
+     * The renderer's distance to a body along a ray.
+     *
+     * @param body the body
+     * @param ray  the ray
+     * @return the distance, or {@link Geometry#NO_HIT}
+     */
+    private static double nearestHit(Geometry body, Ray ray) {
+        Point3D p = ray.getP0();
+        Vector d = ray.getDir();
+        return body.nearestHit(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), Double.POSITIVE_INFINITY);
     }
 }

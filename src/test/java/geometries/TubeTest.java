@@ -2,6 +2,7 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSameRejection;
 
 import java.util.List;
 
@@ -52,6 +53,30 @@ class TubeTest {
         // TC10: zero radius is rejected
         e = assertThrows(IllegalArgumentException.class, () -> new Tube(axis, 0), "TC10: zero radius accepted");
         assertMessage(e, "radius", "TC10");
+    }
+
+    /**
+     * Test method for {@link geometries.Tube#Tube(double, primitives.Ray)}, the course's radius-first order.
+     */
+    @Test
+    void testConstructorRadiusFirst() {
+        Ray axis = new Ray(new Point3D(1, 0, 0), new Vector(0, 0, 3));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the same axis and radius (2) as the axis-first constructor
+        Tube t = new Tube(2, axis);
+        assertEquals(axis, t.getAxisRay(), "TC01: wrong axis ray");
+        assertEquals(2, t.getRadius(), 1e-10, "TC01: wrong radius");
+        // TC02: the same intersections as the test tube built axis first: (0,0,0.5) and (2,0,0.5)
+        Ray ray = new Ray(new Point3D(-1, 0, 0.5), new Vector(1, 0, 0));
+        assertEquals(tube.findIntersections(ray), new Tube(1, new Ray(new Point3D(1, 0, 0), new Vector(0, 0, 1)))
+                .findIntersections(ray), "TC02: different intersections");
+        // TC03: negative radius or a null axis: the same messages as axis first
+        assertSameRejection(() -> new Tube(axis, -1), () -> new Tube(-1, axis), "TC03");
+        assertSameRejection(() -> new Tube(null, 1), () -> new Tube(1, null), "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC10: zero radius: the same message as axis first
+        assertSameRejection(() -> new Tube(axis, 0), () -> new Tube(0, axis), "TC10");
     }
 
     /**

@@ -2,6 +2,7 @@ package renderer;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSameRejection;
 
 import java.util.MissingResourceException;
 
@@ -127,6 +128,48 @@ class CameraTest {
         assertMessage(e, "height", "TC10");
         e = assertThrows(IllegalArgumentException.class, () -> camera.setVpDistance(0), "TC10: zero distance accepted");
         assertMessage(e, "distance", "TC10");
+    }
+
+    /**
+     * Test method for {@link renderer.Camera#setViewPlaneSize(double, double)} and
+     * {@link renderer.Camera#setDistance(double)}, the course's names of the report's setters.
+     */
+    @Test
+    void testCourseSetterNames() {
+        Camera course = originCamera();
+        Camera report = originCamera().setVpSize(4, 3).setVpDistance(10);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the setters return this camera and set the same view plane (4 × 3 at distance 10)
+        assertSame(course, course.setViewPlaneSize(4, 3), "TC01: setViewPlaneSize does not return this");
+        assertSame(course, course.setDistance(10), "TC01: setDistance does not return this");
+        assertEquals(4, course.getWidth(), 1e-10, "TC01: wrong width");
+        assertEquals(3, course.getHeight(), 1e-10, "TC01: wrong height");
+        assertEquals(10, course.getDistance(), 1e-10, "TC01: wrong distance");
+        // TC02: every pixel ray of a 5 × 4 image is the report-named camera's ray, through centres and corners
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 5; ++j) {
+                assertEquals(report.constructRayThroughPixel(5, 4, j, i), course.constructRayThroughPixel(5, 4, j, i),
+                        "TC02: different rays through pixel (" + j + ", " + i + ")");
+                assertEquals(report.constructRayThroughPixel(5, 4, j, i, 0, 1),
+                        course.constructRayThroughPixel(5, 4, j, i, 0, 1),
+                        "TC02: different rays through the corner of pixel (" + j + ", " + i + ")");
+            }
+        // TC03: bad values get the same messages as through the report's names (negative, NaN)
+        assertSameRejection(() -> originCamera().setVpSize(-1, 3), () -> originCamera().setViewPlaneSize(-1, 3), "TC03");
+        assertSameRejection(() -> originCamera().setVpSize(4, Double.NaN),
+                () -> originCamera().setViewPlaneSize(4, Double.NaN), "TC03");
+        assertSameRejection(() -> originCamera().setVpDistance(-10), () -> originCamera().setDistance(-10), "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC10: zero width, height or distance is rejected with the same message
+        assertSameRejection(() -> originCamera().setVpSize(0, 3), () -> originCamera().setViewPlaneSize(0, 3), "TC10");
+        assertSameRejection(() -> originCamera().setVpSize(4, 0), () -> originCamera().setViewPlaneSize(4, 0), "TC10");
+        assertSameRejection(() -> originCamera().setVpDistance(0), () -> originCamera().setDistance(0), "TC10");
+        // TC11: the course's order, distance before size, gives the same camera
+        Camera distanceFirst = originCamera().setDistance(10).setViewPlaneSize(4, 3);
+        assertEquals(report.constructRayThroughPixel(5, 4, 0, 0), distanceFirst.constructRayThroughPixel(5, 4, 0, 0),
+                "TC11: setting the distance first must give the same rays");
     }
 
     /**

@@ -3,6 +3,7 @@ package renderer;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -207,13 +208,21 @@ class RenderTest {
         return count;
     }
 
-    /** Test method for {@link Render#renderImage()}: two triangles sharing an edge leave no seam. */
+    /**
+     * Test method for {@link Render#renderImage()}: two triangles sharing an edge leave no seam, although
+     * the course's query on them misses every ray through that edge.
+     */
     @Test
     void testNoSeam() {
         Scene scene = floorScene("seam").setAmbientLight(new AmbientLight(new Color(100, 100, 100), 1));
         Render render = render("seam", scene);
 
         // ===== Boundary Values Tests =====
+        // TC10: the rays of the pixels (k, 99 − k) meet the floor exactly on the shared diagonal: the
+        // course's query (open triangles) misses all 100 of them (null)
+        for (int k = 0; k < SIZE; ++k)
+            assertNull(scene.geometries.findIntersections(topCamera().constructRayThroughPixel(SIZE, SIZE, k, SIZE - 1 - k)),
+                    "TC10: the course's query must miss the shared edge at pixel (" + k + ", " + (SIZE - 1 - k) + ")");
         // TC11: no pixel along the shared diagonal (and next to it) shows the background
         for (int k = 0; k < SIZE; ++k)
             for (int d = -1; d <= 1; ++d) {

@@ -2,7 +2,10 @@ package testutil;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.function.Executable;
 
 import primitives.Color;
 import primitives.Vector;
@@ -26,6 +29,20 @@ public final class TestAssertions {
     public static void assertMessage(Exception e, String word, String tc) {
         assertTrue(e.getMessage() != null && e.getMessage().contains(word),
                 tc + ": message should name the problem (\"" + word + "\"), got: " + e.getMessage());
+    }
+
+    /**
+     * Asserts that two calls, one through each of two names for the same thing, are both rejected
+     * with an {@link IllegalArgumentException} carrying the same message.
+     *
+     * @param name      the call through one name
+     * @param otherName the same call through the other name
+     * @param tc        the test-case label, named in the failure messages
+     */
+    public static void assertSameRejection(Executable name, Executable otherName, String tc) {
+        String expected = assertThrows(IllegalArgumentException.class, name, tc + ": bad value accepted").getMessage();
+        assertEquals(expected, assertThrows(IllegalArgumentException.class, otherName,
+                tc + ": bad value accepted by the other name").getMessage(), tc + ": a different message");
     }
 
     /**

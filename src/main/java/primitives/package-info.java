@@ -1,0 +1,11 @@
+/**
+ * The basic values every other package is built from: {@link primitives.Point3D}, {@link primitives.Vector},
+ * {@link primitives.Ray}, {@link primitives.Color}, {@link primitives.Material} and the numeric helpers of
+ * {@link primitives.Util}.
+ * <p>
+ * They are immutable: every operation returns a new object. The one exception is
+ * {@link primitives.Vector#normalize()}, which normalises the vector itself ({@link primitives.Vector#normalized()}
+ * returns a new one). Bad input (a zero vector, NaN, a negative colour) throws an
+ * {@link java.lang.IllegalArgumentException} whose message names the problem.
+ */
+package primitives;
