@@ -97,16 +97,13 @@ public record Picture(String name, int nX, int nY, Scene scene, Camera camera, i
     /**
      * A render of this picture, ready to run: its image, camera, ray tracer and settings are set.
      *
-     * @param file the PNG file the image goes to; its name must end with {@code .png}
+     * @param file the image file; its extension names the format ({@code .png}, {@code .jpg},
+     *             {@code .jpeg} or {@code .bmp})
      * @return the render
+     * @throws IllegalArgumentException when the file is null or its extension names no format written here
      */
     public Render newRender(Path file) {
-        String fileName = requireNonNull(file, "image file").getFileName().toString();
-        if (!fileName.endsWith(ImageWriter.EXTENSION))
-            throw new IllegalArgumentException("image file name must end with " + ImageWriter.EXTENSION + ": " + file);
-        Path folder = file.toAbsolutePath().getParent();
-        String imageName = fileName.substring(0, fileName.length() - ImageWriter.EXTENSION.length());
-        Render render = new Render().setImageWriter(new ImageWriter(imageName, nX, nY, folder))
+        Render render = new Render().setImageWriter(ImageWriter.forFile(file, nX, nY))
                 .setCamera(camera).setRayTracer(new RayTracerBasic(scene));
         return settings.applyTo(render);
     }

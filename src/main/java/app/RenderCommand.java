@@ -1,5 +1,8 @@
 package app;
 
+import java.awt.HeadlessException;
+import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.io.UncheckedIOException;
@@ -7,6 +10,7 @@ import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.Properties;
 import java.util.concurrent.Callable;
 import java.util.function.LongConsumer;
 
@@ -14,6 +18,8 @@ import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
 import me.tongfei.progressbar.ProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBarStyle;
+import org.jline.terminal.Terminal;
+import org.jline.terminal.TerminalBuilder;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -22,19 +28,23 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import renderer.ImageWriter;
 import renderer.JitteredGrid;
+import renderer.Preview;
+import renderer.PreviewWindow;
 import renderer.RayTracerBase;
 import renderer.Render;
 
 /**
- * The {@code render} command: renders a scene file to a PNG image, with a progress bar on the error
- * stream, and prints the elapsed time and the ray counts. Options that are not given keep the scene
- * file's settings. Exit codes: 0 on success, 2 for anything that stops the picture (a bad argument, a
- * bad scene file, an image that cannot be written, not enough memory), with one line on the error
- * stream and never a stack trace. The output path is checked first, before the scene file is read.
+ * The command line, {@value #NAME}: renders a scene file to an image (PNG, JPEG or BMP, by the output
+ * file's extension), with a progress bar on the error stream as wide as the terminal, and prints the
+ * elapsed time and the ray counts; {@code --quiet} keeps it silent but for a failure, {@code --preview}
+ * shows the picture forming in a window. Options that are not given keep the scene file's settings. Exit
+ * codes: 0 on success, 2 for anything that stops the picture (a bad argument, a bad scene file, an image
+ * that cannot be written, not enough memory), with one line on the error stream and never a stack trace.
+ * The output path is checked first, before the scene file is read.
  */
-@Command(name = "render", mixinStandardHelpOptions = true, version = "render (ray tracer) 1.0",
+@Command(name = RenderCommand.NAME, mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
-        description = "Renders a scene file (XML, see the README) to a PNG image.",
+        description = "Renders a scene file (XML, see the README) to an image.",
         footerHeading = "%nExit codes:%n",
         footer = {"  0  the image is written",
                 "  2  bad arguments, a bad scene file, or the image cannot be written (one line says why)"})
@@ -45,8 +55,10 @@ public class RenderCommand implements Callable<Integer> {
     public static final int BAD_INPUT = 2;
     /** The most rendering threads the command starts. */
     public static final int MAX_THREADS = 1024;
+    /** How the command is run, as its help and the README say: the runnable jar that {@code mvn package} builds. */
+    public static final String NAME = "java -jar target/raytracer.jar";
 
-    /** The width in characters of the progress bar's line. */
+    /** The width in characters of the progress bar's line when it is not on a terminal. */
     private static final int BAR_WIDTH = 79;
     /** How often the bar is redrawn on a terminal, in milliseconds. */
     private static final int TERMINAL_UPDATE_MS = 200;
@@ -59,9 +71,9 @@ public class RenderCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "SCENE.xml", description = "the scene file")
     private Path sceneFile;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "FILE.png",
-            description = "the image file (default: the scene file's name with .png instead of .xml, "
-                    + "in the current directory)")
+    @Option(names = {"-o", "--output"}, paramLabel = "FILE",
+            description = "the image file, whose extension gives its format: png, jpg, jpeg or bmp (default: the"
+                    + " scene file's name with .png instead of .xml, in the current directory)")
     private Path output;
 
     @Option(names = "--width", paramLabel = "W",
@@ -97,6 +109,15 @@ public class RenderCommand implements Callable<Integer> {
     @Option(names = "--threads", paramLabel = "T", defaultValue = "0",
             description = "the number of rendering threads, 0 for one per core (default: ${DEFAULT-VALUE})")
     private int threads;
+
+    @Option(names = {"-q", "--quiet"},
+            description = "no progress bar and no report: only a failure's line is printed")
+    private boolean quiet;
+
+    @Option(names = "--preview",
+            description = "show the picture in a window as it renders, and keep the window open until it is"
+                    + " closed (without a display, say so and render anyway)")
+    private boolean preview;
 
     private final boolean terminal;
 
@@ -164,15 +185,70 @@ public class RenderCommand implements Callable<Integer> {
         ImageWriter.checkOutput(file);
         Picture picture = adjust(load());
         Render render = newRender(picture, file).setMultithreading(threads);
+        Preview model = preview ? new Preview(render.getImageWriter(), file.getFileName().toString()) : null;
+        PreviewWindow window = model == null ? null : openWindow(model, file);
         long start = System.nanoTime();
+        if (quiet)
+            render(picture, render.setProgressListener(model), () -> { });
+        else
+            renderWithBar(picture, render, model);
+        double seconds = (System.nanoTime() - start) / 1e9;
+        if (!quiet)
+            report(file, picture, seconds, render.getRayTracer());
+        if (window != null)
+            awaitClosed(window);
+        return OK;
+    }
+
+    /**
+     * Renders with the progress bar on the error stream, and the preview, if any, told of the progress too.
+     *
+     * @param picture the picture
+     * @param render  its render
+     * @param model   the preview, or null
+     */
+    private void renderWithBar(Picture picture, Render render, Preview model) {
         WriterConsumer consumer = new WriterConsumer(spec.commandLine().getErr(), terminal);
         try (ProgressBar bar = progressBar((long) picture.nX() * picture.nY(), consumer)) {
-            render.setProgressListener(progress(bar, consumer));
-            render(picture, render, consumer);
+            LongConsumer listener = progress(bar, consumer);
+            render.setProgressListener(model == null ? listener : listener.andThen(model));
+            render(picture, render, consumer::mute);
+        } finally {
+            consumer.closeTerminal();
         }
-        double seconds = (System.nanoTime() - start) / 1e9;
-        report(file, picture, seconds, render.getRayTracer());
-        return OK;
+    }
+
+    /**
+     * Opens the preview window, or says in one line that there is no display for it.
+     *
+     * @param model the preview
+     * @param file  the image file, named in the line
+     * @return the window, or null when there is no display
+     */
+    private PreviewWindow openWindow(Preview model, Path file) {
+        try {
+            return PreviewWindow.open(model);
+        } catch (HeadlessException e) {
+            if (!quiet) {
+                spec.commandLine().getErr().println(file + ": there is no display to show the preview window on;"
+                        + " rendering without it");
+                spec.commandLine().getErr().flush();
+            }
+            return null;
+        }
+    }
+
+    /** Keeps the preview window open until the user closes it. */
+    private void awaitClosed(PreviewWindow window) {
+        if (!quiet) {
+            spec.commandLine().getOut().println("Close the preview window to finish.");
+            spec.commandLine().getOut().flush();
+        }
+        try {
+            window.awaitClosed();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /** Loads the scene file; not enough memory or stack for it is one line too. */
@@ -203,17 +279,21 @@ public class RenderCommand implements Callable<Integer> {
     /**
      * Renders and writes the picture. On a failure the progress bar is muted, so the failure's line is
      * the only one; not enough memory while rendering is one line naming what to make smaller.
+     *
+     * @param picture the picture
+     * @param render  its render
+     * @param mute    silences the progress bar
      */
-    private void render(Picture picture, Render render, WriterConsumer consumer) {
+    private void render(Picture picture, Render render, Runnable mute) {
         try {
             picture.render(render);
         } catch (OutOfMemoryError e) {
-            consumer.mute();
+            mute.run();
             throw new Failure(sceneFile + ": not enough memory to render the scene at " + picture.nX() + " x "
                     + picture.nY() + "; choose a smaller --width/--height, fewer --beams or --aa, or give Java"
                     + " more memory (java -Xmx...)", e);
         } catch (RuntimeException e) {
-            consumer.mute();
+            mute.run();
             throw e;
         }
     }
@@ -229,13 +309,12 @@ public class RenderCommand implements Callable<Integer> {
         if (threads < 0 || threads > MAX_THREADS)
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--threads must be 0 (one per core) to " + MAX_THREADS + ", got " + threads);
-        if (output != null) {
-            Path name = output.getFileName();
-            if (name == null || !name.toString().endsWith(ImageWriter.EXTENSION)
-                    || name.toString().equals(ImageWriter.EXTENSION))
-                throw new CommandLine.ParameterException(spec.commandLine(),
-                        "the output file name must end with " + ImageWriter.EXTENSION + ", got " + output);
-        }
+        if (output != null)
+            try {
+                ImageWriter.formatOf(output);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.ParameterException(spec.commandLine(), "-o: " + e.getMessage());
+            }
     }
 
     private void requireGrid(String option, int value) {
@@ -338,13 +417,31 @@ public class RenderCommand implements Callable<Integer> {
         out.flush();
     }
 
+    /** The version of this build, as the build wrote it into {@code app/version.properties}. */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() throws IOException {
+            Properties properties = new Properties();
+            try (InputStream in = RenderCommand.class.getResourceAsStream("version.properties")) {
+                if (in != null)
+                    properties.load(in);
+            }
+            return new String[] { "raytracer " + properties.getProperty("version", "(version unknown)") };
+        }
+    }
+
     /**
-     * Shows the progress bar on a writer: on a terminal the line is redrawn in place; otherwise each
-     * update is a line of its own, so that a log file stays readable.
+     * Shows the progress bar on a writer: on a terminal the line is redrawn in place, as wide as the
+     * terminal is now; otherwise each update is a line of its own, so that a log file stays readable.
      */
     private static final class WriterConsumer implements ProgressBarConsumer {
+        /** The narrowest bar line: the task name, the percentage and a few cells of the bar. */
+        private static final int MIN_WIDTH = 20;
+
         private final PrintWriter writer;
         private final boolean terminal;
+        /** The terminal, asked for its width at every redraw; null off a terminal or when it cannot be opened. */
+        private final Terminal device;
         private String last;
         /** Whether a tile is done: off a terminal, the bar shows nothing before. */
         private boolean started;
@@ -354,11 +451,33 @@ public class RenderCommand implements Callable<Integer> {
         WriterConsumer(PrintWriter writer, boolean terminal) {
             this.writer = writer;
             this.terminal = terminal;
+            this.device = terminal ? openTerminal() : null;
         }
 
+        /** The system's terminal, or null when it cannot be opened (the bar is then {@value #BAR_WIDTH} wide). */
+        private static Terminal openTerminal() {
+            try {
+                return TerminalBuilder.builder().system(true).dumb(true).build();
+            } catch (IOException | RuntimeException e) {
+                return null;
+            }
+        }
+
+        /** The bar's width: one less than the terminal's (a full line would wrap), or {@value #BAR_WIDTH}. */
         @Override
         public int getMaxRenderedLength() {
-            return BAR_WIDTH;
+            int width = device == null ? 0 : device.getWidth();
+            return width > 0 ? Math.max(MIN_WIDTH, width - 1) : BAR_WIDTH;
+        }
+
+        /** Lets the terminal go once the bar is done. */
+        void closeTerminal() {
+            try {
+                if (device != null)
+                    device.close();
+            } catch (IOException e) {
+                // the bar is done; a terminal that will not close has nothing left to show
+            }
         }
 
         /** Lets the bar show itself off a terminal too: the render is under way. */
@@ -370,7 +489,7 @@ public class RenderCommand implements Callable<Integer> {
         synchronized void mute() {
             muted = true;
             if (terminal)
-                writer.print("\r" + " ".repeat(BAR_WIDTH) + "\r");
+                writer.print("\r" + " ".repeat(getMaxRenderedLength()) + "\r");
             writer.flush();
         }
 

@@ -10,6 +10,9 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeSet;
 import java.util.concurrent.atomic.AtomicLong;
 
 import javax.imageio.ImageIO;
@@ -20,23 +23,28 @@ import static primitives.Util.requireNonNull;
 
 /**
  * An image of {@code nX × nY} pixels that is written as a PNG file, by default to
- * {@code images/<imageName>.png}. The folder is created when it does not exist. The file is written
- * atomically: the PNG goes to a temporary file in the same folder, renamed over the old picture only
- * once complete, so an interrupted write leaves the old picture or the new one, never half of one.
+ * {@code images/<imageName>.png}, or to any file whose extension names a format ImageIO writes:
+ * {@code .png}, {@code .jpg}/{@code .jpeg} or {@code .bmp} (see {@link #forFile(Path, int, int)}). The
+ * folder is created when it does not exist. The file is written atomically: the image goes to a
+ * temporary file in the same folder, renamed over the old picture only once complete, so an interrupted
+ * write leaves the old picture or the new one, never half of one.
  */
 public class ImageWriter {
     /** The folder images go to unless another is given. */
     public static final Path DEFAULT_FOLDER = Path.of("images");
-    /** The extension of the files images are written to. */
+    /** The extension of the files images are written to unless a file is given. */
     public static final String EXTENSION = ".png";
+    /** The extensions of the files images can be written to, with ImageIO's name of each format. */
+    private static final Map<String, String> FORMATS = Map.of(".png", "png", ".jpg", "jpeg", ".jpeg", "jpeg",
+            ".bmp", "bmp");
     /** The most pixels an image can hold: the longest array of ints. */
     public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
 
     /** Numbers the temporary files of this process, so that two writes never share one. */
     private static final AtomicLong TEMPORARY_COUNT = new AtomicLong();
 
-    private final String imageName;
-    private final Path folder;
+    private final Path file;
+    private final String format;
     private final int nX;
     private final int nY;
     private final BufferedImage image;
@@ -65,14 +73,54 @@ public class ImageWriter {
      *                                  positive or has more than {@link #MAX_PIXELS} pixels
      */
     public ImageWriter(String imageName, int nX, int nY, Path folder) {
-        this.imageName = requireNonNull(imageName, "image name");
-        if (imageName.isBlank())
-            throw new IllegalArgumentException("image name must not be blank");
-        this.folder = requireNonNull(folder, "image folder");
+        this(requireNonNull(folder, "image folder").resolve(requireName(imageName) + EXTENSION), nX, nY);
+    }
+
+    /**
+     * Creates an image that will be written to a file, in the format its extension names.
+     *
+     * @param file the file: {@code .png}, {@code .jpg}, {@code .jpeg} or {@code .bmp} (any case)
+     * @param nX   the number of columns, positive
+     * @param nY   the number of rows, positive
+     * @return the image
+     * @throws IllegalArgumentException when the file is null or has another extension, or the size is not
+     *                                  positive or has more than {@link #MAX_PIXELS} pixels
+     */
+    public static ImageWriter forFile(Path file, int nX, int nY) {
+        return new ImageWriter(file, nX, nY);
+    }
+
+    private ImageWriter(Path file, int nX, int nY) {
+        this.format = formatOf(file);
+        this.file = file;
         requireSize(nX, nY);
         this.nX = nX;
         this.nY = nY;
         this.image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
+    }
+
+    private static String requireName(String imageName) {
+        if (requireNonNull(imageName, "image name").isBlank())
+            throw new IllegalArgumentException("image name must not be blank");
+        return imageName;
+    }
+
+    /**
+     * The image format of a file, from its extension.
+     *
+     * @param file the file
+     * @return ImageIO's name of the format: png, jpeg or bmp
+     * @throws IllegalArgumentException when the file is null or its extension names no format written here
+     */
+    public static String formatOf(Path file) {
+        Path name = requireNonNull(file, "image file").getFileName();
+        String fileName = name == null ? "" : name.toString();
+        int dot = fileName.lastIndexOf('.');
+        String format = dot > 0 ? FORMATS.get(fileName.substring(dot).toLowerCase(Locale.ROOT)) : null;
+        if (format == null)
+            throw new IllegalArgumentException("the image file " + file + " must end with one of "
+                    + String.join(", ", new TreeSet<>(FORMATS.keySet())));
+        return format;
     }
 
     /**
@@ -102,7 +150,7 @@ public class ImageWriter {
 
     /** {@return the file the image is written to} */
     public Path getPath() {
-        return folder.resolve(imageName + EXTENSION);
+        return file;
     }
 
     /**
@@ -161,10 +209,10 @@ public class ImageWriter {
     }
 
     /**
-     * Checks, before any rendering, that a PNG file can be written at a path: creates its folder when
+     * Checks, before any rendering, that an image file can be written at a path: creates its folder when
      * missing, and checks that a file can be made there and that the path is not a folder.
      *
-     * @param file the PNG file
+     * @param file the image file
      * @throws UncheckedIOException when no image can be written there
      */
     public static void checkOutput(Path file) {
@@ -177,26 +225,25 @@ public class ImageWriter {
     }
 
     /**
-     * Writes the image as a PNG file, creating the folder when it does not exist: to a temporary file
-     * in the folder first, then renamed over the old file in one step.
+     * Writes the image to its file in its format, creating the folder when it does not exist: to a
+     * temporary file in the folder first, then renamed over the old file in one step.
      *
      * @throws UncheckedIOException when the file cannot be written
      */
     public void writeToImage() {
-        Path path = getPath();
         try {
-            prepareFolder(path);
-            Path temporary = temporaryPath(path);
+            prepareFolder(file);
+            Path temporary = temporaryPath(file);
             temporary.toFile().deleteOnExit(); // not left behind by Ctrl-C while writing
             try {
-                if (!ImageIO.write(image, "png", temporary.toFile()))
-                    throw new IOException("no PNG writer available");
-                Files.move(temporary, path, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+                if (!ImageIO.write(image, format, temporary.toFile()))
+                    throw new IOException("no " + format + " writer available");
+                Files.move(temporary, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } finally {
                 Files.deleteIfExists(temporary);
             }
         } catch (IOException e) {
-            throw cannotWrite(path, e);
+            throw cannotWrite(file, e);
         }
     }
 

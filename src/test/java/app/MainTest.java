@@ -61,7 +61,7 @@ class MainTest {
         out.getBuffer().setLength(0);
         code = Main.run(new String[]{"--help"}, new PrintWriter(out), new PrintWriter(err), false);
         assertEquals(0, code, "TC02: --help should exit with 0");
-        assertTrue(out.toString().startsWith("Usage: render"), "TC02: no usage: " + out);
+        assertTrue(out.toString().startsWith("Usage: java -jar target/raytracer.jar"), "TC02: no usage: " + out);
 
         // TC03: a bad argument: exit 2 (and no System.exit), the message on err
         err.getBuffer().setLength(0);

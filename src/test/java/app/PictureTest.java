@@ -204,7 +204,7 @@ class PictureTest {
         Render render = p.newRender(png);
         assertEquals(40, render.getImageWriter().getNx(), "TC01: wrong image width");
         assertEquals(30, render.getImageWriter().getNy(), "TC01: wrong image height");
-        assertEquals(png.toAbsolutePath(), render.getImageWriter().getPath(), "TC01: wrong image file");
+        assertEquals(png, render.getImageWriter().getPath(), "TC01: wrong image file");
         // TC02: a basic ray tracer with the settings (true, true, 4, 3, 7)
         RayTracerBase tracer = assertInstanceOf(RayTracerBasic.class, render.getRayTracer(),
                 "TC02: the ray tracer must be a RayTracerBasic");
@@ -220,9 +220,9 @@ class PictureTest {
         assertFalse(plain.getRayTracer().isSoftShadows(), "TC04: soft shadows must be off");
         assertEquals(9, plain.getRayTracer().getSqrtBeamNum(), "TC04: sqrtBeamNum must be 9");
         assertEquals(1, plain.getAntiAliasing(), "TC04: anti-aliasing must be 1");
-        // TC05: a file not ending in .png → IllegalArgumentException naming ".png"
-        assertMessage(assertThrows(IllegalArgumentException.class, () -> p.newRender(FOLDER.resolve("p.jpg")),
-                "TC05: a .jpg file must be rejected"), ".png", "TC05");
+        // TC05: a file of a format not written here (.gif) → IllegalArgumentException listing the formats
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> p.newRender(FOLDER.resolve("p.gif")),
+                "TC05: a .gif file must be rejected"), ".bmp, .jpeg, .jpg, .png", "TC05");
         // TC06: a null file → "image file"
         assertMessage(assertThrows(IllegalArgumentException.class, () -> p.newRender(null),
                 "TC06: a null file must be rejected"), "image file", "TC06");
@@ -231,12 +231,15 @@ class PictureTest {
         // TC11: ".png" in the middle of the name is not enough
         assertMessage(assertThrows(IllegalArgumentException.class, () -> p.newRender(FOLDER.resolve("p.png.txt")),
                 "TC11: p.png.txt must be rejected"), ".png", "TC11");
-        // TC12: a file name without a folder goes to the current folder
-        assertEquals(Path.of("bare.png").toAbsolutePath(), p.newRender(Path.of("bare.png")).getImageWriter().getPath(),
+        // TC12: a file name without a folder stays as given: the current folder
+        assertEquals(Path.of("bare.png"), p.newRender(Path.of("bare.png")).getImageWriter().getPath(),
                 "TC12: a bare file name must be in the current folder");
-        // TC13: the name ".png" alone leaves no image name → IllegalArgumentException
+        // TC13: the name ".png" alone is no image file → IllegalArgumentException
         assertMessage(assertThrows(IllegalArgumentException.class, () -> p.newRender(FOLDER.resolve(".png")),
-                "TC13: .png alone must be rejected"), "image name", "TC13");
+                "TC13: .png alone must be rejected"), "must end with one of", "TC13");
+        // TC14: a .JPG file (upper case) is accepted
+        assertEquals(FOLDER.resolve("p.JPG"), p.newRender(FOLDER.resolve("p.JPG")).getImageWriter().getPath(),
+                "TC14: a .JPG file must be accepted");
     }
 
     /** Test method for {@link Picture#render(Render)}. */

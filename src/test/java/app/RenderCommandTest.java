@@ -3,18 +3,21 @@ package app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Locale;
 import java.util.Random;
 import java.util.regex.MatchResult;
 import java.util.regex.Matcher;
@@ -339,15 +342,91 @@ class RenderCommandTest {
         Result result = run("--help");
         assertEquals(0, result.code(), "TC01: --help should exit with 0");
         assertEquals("", result.err(), "TC01: --help wrote to the error stream");
-        for (String option : List.of("SCENE.xml", "-o, --output", "--width", "--height", "--[no-]soft-shadows",
-                "--[no-]adaptive", "--beams", "--aa", "--seed", "--threads", "-h, --help", "-V, --version"))
-            assertTrue(result.out().contains(option), "TC01: the help does not list " + option + ":\n" + result.out());
+        for (String option : List.of("Usage: java -jar target/raytracer.jar", "SCENE.xml", "-o, --output",
+                "--width", "--height", "--[no-]soft-shadows", "--[no-]adaptive", "--beams", "--aa", "--seed", "--threads",
+                "-q, --quiet", "--preview", "-h, --help", "-V, --version", "png, jpg, jpeg or bmp"))
+            assertTrue(result.out().replaceAll("\\s+", " ").contains(option), "TC01: the help does not list " + option + ":\n" + result.out());
         assertTrue(result.out().replaceAll("\\s+", " ").contains("in the current directory"),
                 "TC01: the help should say where the image goes by default");
-        // TC02: --version: exit 0, a version line
+        // TC02: --version: exit 0, the build's version, as the pom gives it ("raytracer 1.0.0")
         result = run("--version");
         assertEquals(0, result.code(), "TC02: --version should exit with 0");
-        assertTrue(result.out().startsWith("render"), "TC02: wrong version line: " + result.out());
+        assertEquals("raytracer " + buildVersion(), result.out().strip(), "TC02: wrong version line");
+    }
+
+    /**
+     * The project's version, as the pom gives it.
+     *
+     * @return the text of the pom's first {@code <version>} element
+     */
+    private static String buildVersion() {
+        try {
+            Matcher m = Pattern.compile("<version>([^<]+)</version>").matcher(Files.readString(Path.of("pom.xml")));
+            assertTrue(m.find(), "no version in the pom");
+            return m.group(1);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** Test method for the image formats: the output file's extension chooses PNG, JPEG or BMP. */
+    @Test
+    void testFormats() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: .jpg, .jpeg and .bmp give 30 x 20 images that ImageIO reads back in those formats
+        for (String extension : List.of(".jpg", ".jpeg", ".bmp")) {
+            Path file = FOLDER.resolve("format" + extension);
+            Files.deleteIfExists(file);
+            Result result = run(sceneFile.toString(), "-o", file.toString(), "--width", "30", "--quiet");
+            assertEquals(0, result.code(), "TC01: " + extension + " failed: " + result.err());
+            BufferedImage image = ImageIO.read(file.toFile());
+            assertNotNull(image, "TC01: ImageIO cannot read the " + extension + " file back");
+            assertEquals(30, image.getWidth(), "TC01: wrong width of the " + extension + " image");
+            assertEquals(20, image.getHeight(), "TC01: wrong height of the " + extension + " image");
+            String format = ImageIO.getImageReaders(ImageIO.createImageInputStream(file.toFile())).next().getFormatName();
+            assertEquals(extension.equals(".bmp") ? "bmp" : "jpeg", format.toLowerCase(Locale.ROOT),
+                    "TC01: wrong format written for " + extension);
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: an upper-case extension (.PNG) is a PNG
+        Path upper = FOLDER.resolve("upper.PNG");
+        assertEquals(0, run(sceneFile.toString(), "-o", upper.toString(), "--width", "30", "--quiet").code(),
+                "TC11: .PNG must be accepted");
+        assertEquals("png", ImageIO.getImageReaders(ImageIO.createImageInputStream(upper.toFile())).next()
+                .getFormatName().toLowerCase(Locale.ROOT), "TC11: .PNG must be written as a PNG");
+    }
+
+    /** Test method for --quiet and --preview. */
+    @Test
+    void testQuietAndPreview() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: --quiet: exit 0, the image written, nothing on either stream
+        Path quiet = FOLDER.resolve("quiet.png");
+        Files.deleteIfExists(quiet);
+        Result result = run(true, sceneFile.toString(), "-o", quiet.toString(), "--width", "30", "--quiet");
+        assertEquals(0, result.code(), "TC01: --quiet failed: " + result.err());
+        assertTrue(Files.exists(quiet), "TC01: no image written");
+        assertEquals("", result.out(), "TC01: --quiet printed a report");
+        assertEquals("", result.err(), "TC01: --quiet printed a progress bar");
+        // TC02: --preview with no display (the tests run headless): one line says so, and the picture is
+        // rendered and reported anyway
+        Path previewed = FOLDER.resolve("previewed.png");
+        Files.deleteIfExists(previewed);
+        result = run(sceneFile.toString(), "-o", previewed.toString(), "--width", "30", "--preview");
+        assertEquals(0, result.code(), "TC02: --preview without a display must still render: " + result.err());
+        assertTrue(Files.exists(previewed), "TC02: no image written");
+        assertTrue(result.errLines().get(0).endsWith("there is no display to show the preview window on; rendering"
+                + " without it"), "TC02: no line about the missing display: " + result.err());
+        assertEquals(600, reported(result, "Primary rays:"), "TC02: the render is not reported");
+
+        // ===== Boundary Values Tests =====
+        // TC11: --quiet --preview with no display: nothing printed at all, and a bad option is still one line
+        result = run(sceneFile.toString(), "-o", previewed.toString(), "--width", "30", "--preview", "--quiet");
+        assertEquals(0, result.code(), "TC11: wrong exit code");
+        assertEquals("", result.out() + result.err(), "TC11: --quiet must silence the missing display's line");
+        assertBadArgument("TC11", "--beams must be between 1 and 1000", sceneFile.toString(), "--quiet",
+                "--beams", "0");
     }
 
     /** Test method for {@link RenderCommand#outputFile()}: the default image file. */
@@ -378,8 +457,9 @@ class RenderCommandTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: an unknown option
         assertBadArgument("TC01", "Unknown option: '--bogus'", scene, "-o", png, "--bogus");
-        // TC02: an output file that is not a PNG
-        assertBadArgument("TC02", "must end with .png", scene, "-o", FOLDER.resolve("out.jpg").toString());
+        // TC02: an output file of a format not written here (GIF): the supported extensions are listed
+        assertBadArgument("TC02", "must end with one of .bmp, .jpeg, .jpg, .png", scene, "-o",
+                FOLDER.resolve("out.gif").toString());
         // TC03: no scene file
         assertBadArgument("TC03", "Missing required parameter: 'SCENE.xml'", "-o", png);
         // TC04: a width that is not a number
@@ -398,8 +478,9 @@ class RenderCommandTest {
         assertBadArgument("TC13", "--height must be 1 or more, got 0", scene, "-o", png, "--height", "0");
         // TC14: --threads -1
         assertBadArgument("TC14", "--threads must be 0", scene, "-o", png, "--threads", "-1");
-        // TC15: an output file named just ".png"
-        assertBadArgument("TC15", "must end with .png", scene, "-o", FOLDER.resolve(".png").toString());
+        // TC15: an output file named just ".png", and one with no extension
+        assertBadArgument("TC15", "must end with one of", scene, "-o", FOLDER.resolve(".png").toString());
+        assertBadArgument("TC15", "must end with one of", scene, "-o", FOLDER.resolve("png").toString());
         assertFalse(Files.exists(Path.of(png)), "an image was written despite bad arguments");
     }
 
@@ -408,7 +489,8 @@ class RenderCommandTest {
         assertEquals(2, result.code(), tc + ": bad arguments should exit with 2");
         assertOneLine(result, tc);
         assertTrue(result.err().contains(message), tc + ": wrong message: " + result.err());
-        assertTrue(result.err().contains("(see 'render --help')"), tc + ": no --help hint: " + result.err());
+        assertTrue(result.err().contains("(see 'java -jar target/raytracer.jar --help')"),
+                tc + ": no --help hint: " + result.err());
     }
 
     /** Test method for the limits of the options: too large a grid or picture is one line, exit code 2. */
