@@ -197,6 +197,68 @@ class ImageWriterTest {
         }
     }
 
+    /**
+     * Test method for {@link ImageWriter#forFile(Path, int, int)} and {@link ImageWriter#formatOf(Path)}:
+     * the file's extension chooses the format.
+     */
+    @Test
+    void testForFile() throws IOException {
+        Path folder = TEST_FOLDER.resolve("formats");
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the extensions and their formats: .png png, .jpg and .jpeg jpeg, .bmp bmp
+        assertEquals("png", ImageWriter.formatOf(Path.of("a.png")), "TC01: wrong format of .png");
+        assertEquals("jpeg", ImageWriter.formatOf(Path.of("a.jpg")), "TC01: wrong format of .jpg");
+        assertEquals("jpeg", ImageWriter.formatOf(Path.of("a.jpeg")), "TC01: wrong format of .jpeg");
+        assertEquals("bmp", ImageWriter.formatOf(Path.of("a.bmp")), "TC01: wrong format of .bmp");
+        // TC02: a 6 × 4 BMP with a red pixel is written to exactly that file and read back so
+        Path bmp = folder.resolve("red.bmp");
+        Files.deleteIfExists(bmp);
+        ImageWriter writer = ImageWriter.forFile(bmp, 6, 4);
+        assertEquals(bmp, writer.getPath(), "TC02: wrong file");
+        writer.writePixel(2, 1, new Color(255, 0, 0));
+        writer.writeToImage();
+        BufferedImage image = ImageIO.read(bmp.toFile());
+        assertEquals(6, image.getWidth(), "TC02: wrong width");
+        assertEquals(0xFF0000, image.getRGB(2, 1) & 0xFFFFFF, "TC02: wrong pixel in the BMP");
+        // TC03: another extension (.gif, .txt) is refused, listing the ones written here
+        for (String name : new String[] { "a.gif", "a.txt" })
+            assertMessage(assertThrows(IllegalArgumentException.class, () -> ImageWriter.forFile(Path.of(name), 2, 2),
+                    "TC03: " + name + " must be refused"), "must end with one of .bmp, .jpeg, .jpg, .png", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: upper case extensions count (.JPG is jpeg)
+        assertEquals("jpeg", ImageWriter.formatOf(Path.of("A.JPG")), "TC11: .JPG must be jpeg");
+        // TC12: no extension, the extension alone, or a null file are refused
+        for (String name : new String[] { "png", ".png", "a." })
+            assertThrows(IllegalArgumentException.class, () -> ImageWriter.formatOf(Path.of(name)),
+                    "TC12: " + name + " must be refused");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> ImageWriter.formatOf(null),
+                "TC12: a null file must be refused"), "image file", "TC12");
+    }
+
+    /** Test method for {@link ImageWriter#copyTo(BufferedImage)}. */
+    @Test
+    void testCopyTo() {
+        ImageWriter writer = new ImageWriter("copy", 3, 2, TEST_FOLDER);
+        writer.writePixel(1, 1, new Color(0, 0, 255));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a 3 × 2 copy holds every pixel, the blue one included
+        BufferedImage copy = new BufferedImage(3, 2, BufferedImage.TYPE_INT_RGB);
+        writer.copyTo(copy);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 3; ++x)
+                assertEquals(writer.getPixel(x, y).getRGB(), copy.getRGB(x, y), "TC01: pixel (" + x + ", " + y + ")");
+        assertEquals(0x0000FF, copy.getRGB(1, 1) & 0xFFFFFF, "TC01: the blue pixel is not copied");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a target of another size (3 × 3) or null is refused
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> writer.copyTo(new BufferedImage(3, 3, BufferedImage.TYPE_INT_RGB)), "TC11: wrong size accepted"),
+                "3x3", "TC11");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> writer.copyTo(null),
+                "TC11: null accepted"), "target image", "TC11");
+    }
+
     /** Test method for {@link renderer.ImageWriter#writeToImage()} when the folder cannot be created. */
     @Test
     void testWriteToImageFailure() throws IOException {
