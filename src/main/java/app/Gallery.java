@@ -19,6 +19,8 @@ import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.Render;
 import scene.Scene;
+import scenefile.Picture;
+import scenefile.RenderSettings;
 
 /**
  * The example gallery: the course's classic pictures, built in Java.

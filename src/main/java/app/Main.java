@@ -5,6 +5,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Path;
 
 import renderer.ImageWriter;
+import scenefile.Picture;
 
 /**
  * The command-line entry point: with no arguments it renders the example gallery into {@code images/};

@@ -32,6 +32,10 @@ import renderer.Preview;
 import renderer.PreviewWindow;
 import renderer.RayTracerBase;
 import renderer.Render;
+import scenefile.Picture;
+import scenefile.RenderSettings;
+import scenefile.SceneFileException;
+import scenefile.SceneLoader;
 
 /**
  * The command line, {@value #NAME}: renders a scene file to an image (PNG, JPEG or BMP, by the output

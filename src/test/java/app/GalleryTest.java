@@ -20,6 +20,8 @@ import org.junit.jupiter.api.Test;
 
 import renderer.ImageWriter;
 import renderer.Render;
+import scenefile.Picture;
+import scenefile.SceneLoader;
 
 /**
  * Tests for {@link Gallery}: every picture renders (into {@code target/}, never {@code images/}), and the

@@ -31,6 +31,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import picocli.CommandLine;
 
+import scenefile.ObjMesh;
 import testutil.TestFiles;
 
 /**

@@ -28,6 +28,7 @@ import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
 import scene.Scene;
+import scenefile.Picture;
 
 /**
  * Unit tests for {@link RayTracerBasic}: exact colours of single rays under the Phong model, shadows,
@@ -546,7 +547,7 @@ class RayTracerBasicTest {
     }
 
     /** Renders a gallery picture at a quarter of its size, through the hierarchy or a brute-force scan. */
-    private static ImageWriter renderQuarter(app.Picture picture, boolean bruteForce) {
+    private static ImageWriter renderQuarter(Picture picture, boolean bruteForce) {
         RayTracerBasic tracer = new RayTracerBasic(picture.scene());
         tracer.setBruteForce(bruteForce);
         ImageWriter image = new ImageWriter(picture.name() + (bruteForce ? "-scan" : "-bvh"), picture.nX() / 4,
@@ -566,7 +567,7 @@ class RayTracerBasicTest {
         int pixels = 0;
         int differing = 0;
         int worst = 0;
-        for (app.Picture picture : app.Gallery.pictures()) {
+        for (Picture picture : app.Gallery.pictures()) {
             Difference difference = difference(renderQuarter(picture, false), renderQuarter(picture, true));
             pixels += difference.pixels();
             differing += difference.differing();

@@ -1,4 +1,4 @@
-package app;
+package scenefile;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -29,7 +29,7 @@ import scene.Scene;
 import static primitives.Util.requireNonNull;
 
 /**
- * Loads a scene file — XML checked against the scene schema {@code app/scene.xsd} — into a
+ * Loads a scene file — XML checked against the scene schema {@code scenefile/scene.xsd} — into a
  * {@link Picture}: the scene, its camera, the image's size and the render settings.
  *
  * <pre>{@code

@@ -1,4 +1,4 @@
-package app;
+package scenefile;
 
 import renderer.JitteredGrid;
 import renderer.RayTracerBase;

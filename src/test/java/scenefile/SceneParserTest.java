@@ -1,4 +1,4 @@
-package app;
+package scenefile;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static testutil.TestAssertions.assertMessage;

@@ -1,4 +1,4 @@
-package app;
+package scenefile;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -16,6 +16,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 
 
+import app.Gallery;
 import geometries.Cylinder;
 import geometries.Geometries;
 import geometries.Geometry;

@@ -1,4 +1,4 @@
-package app;
+package scenefile;
 
 import java.nio.file.Path;
 import java.util.ArrayList;

@@ -1,4 +1,4 @@
-package app;
+package scenefile;
 
 import java.io.BufferedInputStream;
 import java.io.IOException;
@@ -33,7 +33,7 @@ import org.xml.sax.helpers.DefaultHandler;
 
 /**
  * Reads a scene file into a tree of {@link SceneElement}s, checking it against the scene schema
- * ({@code app/scene.xsd}, shipped in the jar). The first problem stops the reading with a
+ * ({@code scenefile/scene.xsd}, shipped in the jar). The first problem stops the reading with a
  * {@link SceneFileException} whose message is one plain line: the schema validator's wording is
  * turned into the scene file's terms ("attribute 'radius' of &lt;sphere&gt; must be a number").
  */

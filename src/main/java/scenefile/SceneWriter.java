@@ -1,4 +1,4 @@
-package app;
+package scenefile;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -33,7 +33,7 @@ import scene.Scene;
 import static primitives.Util.requireNonNull;
 
 /**
- * Writes a {@link Picture} as a scene file in the format of the scene schema {@code app/scene.xsd}, which
+ * Writes a {@link Picture} as a scene file in the format of the scene schema {@code scenefile/scene.xsd}, which
  * {@link SceneLoader#load(Path)} reads back into the same picture: a scene built in Java can be saved,
  * shared and rendered from the command line.
  *
