@@ -69,12 +69,20 @@ public class Polygon extends Geometry {
         }
     }
 
+    /**
+     * The edges, from each vertex to the next. Two neighbours coincide when they are closer than
+     * {@link #EDGE_TOLERANCE} of the longest edge: the test is relative, so a polygon of any size is
+     * judged by its shape.
+     */
     private static Vector[] edgesOf(Point3D[] vertices) {
         int n = vertices.length;
+        double longest = 0;
+        for (int i = 0; i < n; ++i)
+            longest = Math.max(longest, vertices[i].distance(vertices[(i + 1) % n]));
         Vector[] edges = new Vector[n];
         for (int i = 0; i < n; ++i) {
             Point3D next = vertices[(i + 1) % n];
-            if (next.equals(vertices[i]))
+            if (vertices[i].distance(next) <= EDGE_TOLERANCE * longest)
                 throw new IllegalArgumentException("polygon vertices " + i + " and " + (i + 1) % n + " coincide: " + next);
             edges[i] = next.subtract(vertices[i]);
         }

@@ -122,6 +122,20 @@ class PolygonTest {
         assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> new Polygon(A, B, C, D, A), "TC15: closing vertex equal to the first must throw"),
                 "coincide", "TC15");
+
+        // TC16: the tolerance is relative: a triangle 1e-12 across is a triangle, with a unit normal (0,0,1)
+        Polygon tiny = assertDoesNotThrow(() -> new Polygon(new Point3D(5, 5, 5), new Point3D(5 + 1e-12, 5, 5),
+                new Point3D(5, 5 + 1e-12, 5)), "TC16: a tiny triangle must be accepted");
+        assertEquals(1, tiny.getNormal(new Point3D(5, 5, 5)).length(), 1e-12, "TC16: the normal must be a unit vector");
+        assertEquals(1, Math.abs(tiny.getNormal(new Point3D(5, 5, 5)).getZ()), 1e-9, "TC16: wrong normal");
+
+        // TC17: in a polygon whose longest edge is about 1414, two vertices 1e-5 apart do not coincide, and
+        // 1e-7 apart (less than 1e-9 of that edge) they do
+        assertDoesNotThrow(() -> new Polygon(new Point3D(0, 0, 0), new Point3D(1000, 0, 0), new Point3D(1000, 1000, 0),
+                new Point3D(1000 - 1e-5, 1000, 0)), "TC17: vertices 1e-5 apart must count as two");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> new Polygon(new Point3D(0, 0, 0),
+                new Point3D(1000, 0, 0), new Point3D(1000, 1000, 0), new Point3D(1000 - 1e-7, 1000, 0)),
+                "TC17: vertices 1e-7 apart in a polygon 1414 across must coincide"), "coincide", "TC17");
     }
 
     /**
