@@ -127,18 +127,6 @@ public final class PreviewWindow {
         g.drawImage(image, (width - w) / 2, (height - h) / 2, w, h, null);
     }
 
-    /** {@return the window's title as it is now} */
-    public String getTitle() {
-        String[] title = new String[1];
-        onEventThread(() -> title[0] = frame.getTitle());
-        return title[0];
-    }
-
-    /** {@return whether the window has been closed} */
-    public boolean isClosed() {
-        return closed.getCount() == 0;
-    }
-
     /**
      * Waits until the user closes the window.
      *
