@@ -1,7 +1,13 @@
 package geometries;
 
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.IntConsumer;
+import java.util.stream.IntStream;
 
 import geometries.Intersectable.GeoPoint;
 import primitives.Point3D;
@@ -45,6 +51,12 @@ public final class BoundingVolumeHierarchy {
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
 
+    /** The bodies of one chunk of the work shared out among threads during the build. */
+    private static final int CHUNK = 8192;
+
+    /** The composite the hierarchy was built over, and the version of its contents then. */
+    private final Intersectable source;
+    private final long version;
     private final Geometry[] bodies;
     /** The padded box of every body of the tree, in leaf order. */
     private final double[] bodyBounds;
@@ -62,8 +74,8 @@ public final class BoundingVolumeHierarchy {
      * child (its right child is the node after it) and −1 − its split axis.
      */
     private final int[] nodeLinks;
-    private int nodesCount;
-    private int depth;
+    private final int nodesCount;
+    private final int depth;
 
     /**
      * Per-thread scratch space of queries: the traversal stack and the running result. Get one from
@@ -95,11 +107,15 @@ public final class BoundingVolumeHierarchy {
         }
     }
 
-    private BoundingVolumeHierarchy(Intersectable scene, boolean tree) {
+    private BoundingVolumeHierarchy(Intersectable scene, boolean tree, int threads) {
+        if (threads < 1)
+            throw new IllegalArgumentException("threads must be 1 or more, got " + threads);
+        this.source = requireNonNull(scene, "geometries");
+        this.version = versionOf(scene);
         List<Geometry> bounded = new ArrayList<>();
         List<Geometry> infinite = new ArrayList<>();
         List<Intersectable> generic = new ArrayList<>();
-        flatten(requireNonNull(scene, "geometries"), bounded, infinite, generic);
+        flatten(scene, bounded, infinite, generic, new double[6]);
         if (!tree) {
             infinite.addAll(bounded);
             bounded.clear();
@@ -108,15 +124,21 @@ public final class BoundingVolumeHierarchy {
         this.unbounded = infinite.toArray(new Geometry[0]);
         this.others = generic.toArray(new Intersectable[0]);
         this.culling = tree;
-        this.bodyBounds = new double[6 * bodies.length];
-        int maxNodes = Math.max(1, 2 * bodies.length);
-        this.nodeBounds = new double[6 * maxNodes];
-        this.nodeLinks = new int[2 * maxNodes];
-        if (bodies.length > 0)
-            new Builder().build();
+        Builder builder = new Builder(bodies, threads);
+        builder.build();
+        this.bodyBounds = builder.bodyBounds;
+        this.nodeBounds = builder.nodeBounds;
+        this.nodeLinks = builder.nodeLinks;
+        this.nodesCount = builder.nodesCount;
+        this.depth = builder.depth;
         this.triangle = new boolean[bodies.length];
         this.triangleData = new double[Triangle.DATA_LENGTH * bodies.length];
-        for (int b = 0; b < bodies.length; ++b)
+        runInChunks(bodies.length, threads, this::copyTriangles);
+    }
+
+    /** Copies the data of the plain triangles among bodies [from, to) into {@link #triangleData}. */
+    private void copyTriangles(int from, int to) {
+        for (int b = from; b < to; ++b)
             if (bodies[b].getClass() == Triangle.class) {
                 triangle[b] = true;
                 ((Triangle) bodies[b]).copyData(triangleData, Triangle.DATA_LENGTH * b);
@@ -124,13 +146,26 @@ public final class BoundingVolumeHierarchy {
     }
 
     /**
-     * Builds the hierarchy over a composite's bodies.
+     * Builds the hierarchy over a composite's bodies on the calling thread.
      *
      * @param geometries the composite (or a single body)
      * @return the hierarchy
      */
     public static BoundingVolumeHierarchy build(Intersectable geometries) {
-        return new BoundingVolumeHierarchy(geometries, true);
+        return build(geometries, 1);
+    }
+
+    /**
+     * Builds the hierarchy over a composite's bodies on several threads: the top of the tree on the
+     * calling thread, then its subtrees side by side. The tree answers every query as the one built
+     * on one thread does.
+     *
+     * @param geometries the composite (or a single body)
+     * @param threads    the number of threads, 1 or more (the calling thread is one of them)
+     * @return the hierarchy
+     */
+    public static BoundingVolumeHierarchy build(Intersectable geometries, int threads) {
+        return new BoundingVolumeHierarchy(geometries, true, threads);
     }
 
     /**
@@ -140,18 +175,91 @@ public final class BoundingVolumeHierarchy {
      * @return the linear scan
      */
     public static BoundingVolumeHierarchy scan(Intersectable geometries) {
-        return new BoundingVolumeHierarchy(geometries, false);
+        return new BoundingVolumeHierarchy(geometries, false, 1);
+    }
+
+    /**
+     * Whether the hierarchy was built over this composite as it is now: the same object, and no body
+     * added to it, or to a composite in it, since. Renders build once and ask this before each frame.
+     *
+     * @param geometries the composite
+     * @return true when the hierarchy is up to date for it
+     */
+    public boolean isBuiltFrom(Intersectable geometries) {
+        return geometries == source && versionOf(geometries) == version;
+    }
+
+    /** {@return the version of a composite's contents (0 for a single body, which never changes)} */
+    private static long versionOf(Intersectable geometries) {
+        return geometries instanceof Geometries composite ? composite.version() : 0;
     }
 
     private static void flatten(Intersectable item, List<Geometry> bounded, List<Geometry> infinite,
-                                List<Intersectable> generic) {
+                                List<Intersectable> generic, double[] box) {
         if (item instanceof Geometries composite)
             for (Intersectable child : composite.getGeometries())
-                flatten(child, bounded, infinite, generic);
+                flatten(child, bounded, infinite, generic, box);
         else if (item instanceof Geometry geometry)
-            (geometry.bounds() == null ? infinite : bounded).add(geometry);
+            (geometry.bounds(box, 0) ? bounded : infinite).add(geometry);
         else
             generic.add(item);
+    }
+
+    /**
+     * Runs a job over ranges [from, to) of count items, a chunk at a time, on up to threads threads.
+     *
+     * @param count   the number of items
+     * @param threads the number of threads
+     * @param job     the job, called with each chunk's first item and one past its last
+     */
+    private static void runInChunks(int count, int threads, ChunkJob job) {
+        int chunks = (count + CHUNK - 1) / CHUNK;
+        runAll(chunks, threads, c -> job.run(c * CHUNK, Math.min(count, (c + 1) * CHUNK)));
+    }
+
+    /** A job over a range of items, see {@link #runInChunks}. */
+    @FunctionalInterface
+    private interface ChunkJob {
+        void run(int from, int to);
+    }
+
+    /**
+     * Runs tasks 0 to count − 1, each once, on up to threads threads: the calling one and as many
+     * more as needed. Each thread takes the next task left until none is; the first failure is
+     * thrown again on the calling thread.
+     *
+     * @param count   the number of tasks
+     * @param threads the number of threads
+     * @param task    the task, called with its number
+     */
+    private static void runAll(int count, int threads, IntConsumer task) {
+        AtomicInteger next = new AtomicInteger();
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Runnable worker = () -> {
+            try {
+                for (int t = next.getAndIncrement(); t < count && failure.get() == null; t = next.getAndIncrement())
+                    task.accept(t);
+            } catch (RuntimeException | Error e) { // thrown again by the calling thread
+                failure.compareAndSet(null, e);
+            }
+        };
+        Thread[] helpers = new Thread[Math.max(0, Math.min(threads, count) - 1)];
+        for (int h = 0; h < helpers.length; ++h) {
+            helpers[h] = new Thread(worker, "hierarchy-build-" + h);
+            helpers[h].start();
+        }
+        worker.run();
+        try {
+            for (Thread helper : helpers)
+                helper.join();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("building the hierarchy was interrupted", e);
+        }
+        if (failure.get() instanceof RuntimeException e)
+            throw e;
+        if (failure.get() instanceof Error e)
+            throw e;
     }
 
     /** {@return a fresh scratch space for queries on this hierarchy} */
@@ -484,144 +592,273 @@ public final class BoundingVolumeHierarchy {
         return near <= far;
     }
 
-    /** The top-down build: bodies are reordered so every leaf holds a run of them. */
-    private final class Builder {
-        private final double[] boxes = new double[6 * bodies.length];
-        private final double[] centroids = new double[3 * bodies.length];
-        private final int[] order = new int[bodies.length];
-        private final int[] binCounts = new int[BINS];
-        private final double[] binBoxes = new double[6 * BINS];
-        private final double[] rightAreas = new double[BINS];
+    /**
+     * The top-down build by the binned surface-area heuristic: bodies are reordered so every leaf
+     * holds a run of them. The top of the tree is split on the calling thread down to subtrees of at
+     * most a share of the bodies; these are built side by side, largest first, each into a region of
+     * the node arrays big enough for any tree over its bodies (2k − 2 nodes below its root for k
+     * bodies), and the regions are then moved together. A split depends only on the bodies of its
+     * node, so the tree is the same whatever the number of threads: only where its nodes lie in the
+     * arrays differs. Everything lives in flat arrays; nothing is allocated per body or per node.
+     */
+    private static final class Builder {
+        /** Each thread gets about this many subtrees, so that one large subtree does not hold up the rest. */
+        private static final int SUBTREES_PER_THREAD = 4;
+
+        private final Geometry[] bodies;
+        private final int threads;
+        /** The padded box and the centroid of every body, by its place in {@link #bodies} before the build. */
+        private final double[] boxes;
+        private final double[] centroids;
+        /** The bodies in leaf order. */
+        private final int[] order;
+        /** The subtrees left for the threads, four ints each: node, first body, end, level. */
+        private int[] subtrees = new int[4 * SUBTREES_PER_THREAD];
+        private int subtreesCount;
+        /** The padded box of every body, in leaf order: the result, with the nodes and the depth. */
+        double[] bodyBounds;
+        double[] nodeBounds;
+        int[] nodeLinks;
+        int nodesCount;
+        int depth;
+
+        Builder(Geometry[] bodies, int threads) {
+            this.bodies = bodies;
+            this.threads = threads;
+            int count = bodies.length;
+            this.boxes = new double[6 * count];
+            this.centroids = new double[3 * count];
+            this.order = new int[count];
+            this.bodyBounds = new double[6 * count];
+            int maxNodes = Math.max(0, 2 * count - 1);
+            this.nodeBounds = new double[6 * maxNodes];
+            this.nodeLinks = new int[2 * maxNodes];
+        }
 
         void build() {
-            for (int i = 0; i < bodies.length; ++i) {
-                double[] box = bodies[i].bounds();
+            int count = bodies.length;
+            if (count == 0)
+                return;
+            runInChunks(count, threads, this::measure);
+            Splitter top = new Splitter(1, threads == 1 ? count : count / (SUBTREES_PER_THREAD * threads));
+            top.split(0, 0, count, 1);
+            int[] regions = new int[subtreesCount];
+            int free = top.next;
+            for (int t = 0; t < subtreesCount; ++t) {
+                regions[t] = free;
+                free += 2 * (subtrees[4 * t + 2] - subtrees[4 * t + 1]) - 2;
+            }
+            int[] ends = new int[subtreesCount];
+            int[] depths = new int[subtreesCount];
+            int[] largestFirst = IntStream.range(0, subtreesCount).boxed()
+                    .sorted(Comparator.comparingInt(t -> subtrees[4 * t + 1] - subtrees[4 * t + 2]))
+                    .mapToInt(Integer::intValue).toArray();
+            runAll(subtreesCount, threads, k -> {
+                int t = largestFirst[k];
+                Splitter splitter = new Splitter(regions[t], 0);
+                splitter.split(subtrees[4 * t], subtrees[4 * t + 1], subtrees[4 * t + 2], subtrees[4 * t + 3]);
+                ends[t] = splitter.next;
+                depths[t] = splitter.depth;
+            });
+            depth = Math.max(top.depth, Arrays.stream(depths).max().orElse(0));
+            nodesCount = compact(top.next, regions, ends);
+            nodeBounds = Arrays.copyOf(nodeBounds, 6 * nodesCount);
+            nodeLinks = Arrays.copyOf(nodeLinks, 2 * nodesCount);
+            Geometry[] ordered = new Geometry[count];
+            runInChunks(count, threads, (from, to) -> {
+                for (int i = from; i < to; ++i) {
+                    ordered[i] = bodies[order[i]];
+                    System.arraycopy(boxes, 6 * order[i], bodyBounds, 6 * i, 6);
+                }
+            });
+            System.arraycopy(ordered, 0, bodies, 0, count);
+        }
+
+        /** Sets the padded boxes and the centroids of bodies [from, to). */
+        private void measure(int from, int to) {
+            for (int i = from; i < to; ++i) {
+                bodies[i].bounds(boxes, 6 * i);
                 for (int k = 0; k < 3; ++k) {
-                    double pad = PADDING * (1 + Math.abs(box[k]) + Math.abs(box[3 + k]));
-                    boxes[6 * i + k] = box[k] - pad;
-                    boxes[6 * i + 3 + k] = box[3 + k] + pad;
-                    centroids[3 * i + k] = (box[k] + box[3 + k]) / 2;
+                    double low = boxes[6 * i + k];
+                    double high = boxes[6 * i + 3 + k];
+                    double pad = PADDING * (1 + Math.abs(low) + Math.abs(high));
+                    boxes[6 * i + k] = low - pad;
+                    boxes[6 * i + 3 + k] = high + pad;
+                    centroids[3 * i + k] = (low + high) / 2;
                 }
                 order[i] = i;
             }
-            nodesCount = 1;
-            split(0, 0, bodies.length, 1);
-            Geometry[] ordered = new Geometry[bodies.length];
-            for (int i = 0; i < bodies.length; ++i) {
-                ordered[i] = bodies[order[i]];
-                System.arraycopy(boxes, 6 * order[i], bodyBounds, 6 * i, 6);
-            }
-            System.arraycopy(ordered, 0, bodies, 0, bodies.length);
         }
 
-        /** Makes node the parent of bodies [start, end), splitting it further while that pays off. */
-        private void split(int node, int start, int end, int level) {
-            depth = Math.max(depth, level);
-            double[] centroidBox = enclose(node, start, end);
-            int axis = widestAxis(centroidBox);
-            double low = centroidBox[axis];
-            double extent = centroidBox[3 + axis] - low;
-            int count = end - start;
-            double binsPerUnit = BINS / extent;
-            int bin = count <= MAX_LEAF_SIZE || level >= MAX_DEPTH || !(extent > 0) ? -1
-                    : bestSplit(node, start, end, axis, low, binsPerUnit);
-            int middle = bin < 0 ? start : partition(start, end, axis, low, binsPerUnit, bin);
-            if (middle == start || middle == end) {
-                nodeLinks[2 * node] = start;
-                nodeLinks[2 * node + 1] = count;
-                return;
-            }
-            int left = nodesCount;
-            nodesCount += 2;
-            nodeLinks[2 * node] = left;
-            nodeLinks[2 * node + 1] = -1 - axis;
-            split(left, start, middle, level + 1);
-            split(left + 1, middle, end, level + 1);
-        }
-
-        /** Sets a node's box around bodies [start, end) and returns the box around their centroids. */
-        private double[] enclose(int node, int start, int end) {
-            double[] centroidBox = EMPTY_BOX.clone();
-            int b = 6 * node;
-            System.arraycopy(EMPTY_BOX, 0, nodeBounds, b, 6);
-            for (int i = start; i < end; ++i) {
-                int body = order[i];
-                growBox(nodeBounds, b, boxes, 6 * body);
-                for (int k = 0; k < 3; ++k) {
-                    centroidBox[k] = Math.min(centroidBox[k], centroids[3 * body + k]);
-                    centroidBox[3 + k] = Math.max(centroidBox[3 + k], centroids[3 * body + k]);
-                }
-            }
-            return centroidBox;
-        }
-
-        private int widestAxis(double[] box) {
-            double x = box[3] - box[0];
-            double y = box[4] - box[1];
-            double z = box[5] - box[2];
-            return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
-        }
-
-        private int binOf(int body, int axis, double low, double binsPerUnit) {
-            return Math.min(BINS - 1, (int) ((centroids[3 * body + axis] - low) * binsPerUnit));
+        /** Leaves the subtree of node over bodies [start, end) for the threads. */
+        private void defer(int node, int start, int end, int level) {
+            if (4 * subtreesCount == subtrees.length)
+                subtrees = Arrays.copyOf(subtrees, 2 * subtrees.length);
+            subtrees[4 * subtreesCount] = node;
+            subtrees[4 * subtreesCount + 1] = start;
+            subtrees[4 * subtreesCount + 2] = end;
+            subtrees[4 * subtreesCount + 3] = level;
+            ++subtreesCount;
         }
 
         /**
-         * The bin after which splitting costs least by the surface-area heuristic, or -1 when no split
-         * is cheaper than a leaf.
+         * Moves the subtrees' regions together after the top's nodes, and the links into them with
+         * them.
+         *
+         * @param free    the first node after the top's
+         * @param regions the first node of each subtree's region
+         * @param ends    one past the last node each subtree used
+         * @return the number of nodes
          */
-        private int bestSplit(int node, int start, int end, int axis, double low, double binsPerUnit) {
-            java.util.Arrays.fill(binCounts, 0);
-            for (int k = 0; k < BINS; ++k)
-                System.arraycopy(EMPTY_BOX, 0, binBoxes, 6 * k, 6);
-            for (int i = start; i < end; ++i) {
-                int body = order[i];
-                int k = binOf(body, axis, low, binsPerUnit);
-                ++binCounts[k];
-                growBox(binBoxes, 6 * k, boxes, 6 * body);
+        private int compact(int free, int[] regions, int[] ends) {
+            for (int t = 0; t < subtreesCount; ++t) {
+                int used = ends[t] - regions[t];
+                int shift = free - regions[t];
+                System.arraycopy(nodeBounds, 6 * regions[t], nodeBounds, 6 * free, 6 * used);
+                System.arraycopy(nodeLinks, 2 * regions[t], nodeLinks, 2 * free, 2 * used);
+                for (int node = free; node < free + used; ++node)
+                    moveLink(node, shift);
+                moveLink(subtrees[4 * t], shift);
+                free += used;
             }
-            double[] sweep = EMPTY_BOX.clone();
-            for (int k = BINS - 1; k > 0; --k) {
-                growBox(sweep, 0, binBoxes, 6 * k);
-                rightAreas[k] = area(sweep, 0);
-            }
-            System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
-            int leftCount = 0;
-            int best = -1;
-            // split when TRAVERSAL_COST·A + Σ n·A(child) beats the leaf's count·A
-            double bestCost = (end - start - TRAVERSAL_COST) * area(nodeBounds, 6 * node);
-            for (int k = 0; k < BINS - 1; ++k) {
-                growBox(sweep, 0, binBoxes, 6 * k);
-                leftCount += binCounts[k];
-                int rightCount = end - start - leftCount;
-                if (leftCount == 0 || rightCount == 0)
-                    continue;
-                double cost = leftCount * area(sweep, 0) + rightCount * rightAreas[k + 1];
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    best = k;
-                }
-            }
-            return best;
+            return free;
         }
 
-        /** Moves the bodies of bins up to and including bin to the front; returns where the rest start. */
-        private int partition(int start, int end, int axis, double low, double binsPerUnit, int bin) {
-            int i = start;
-            int j = end - 1;
-            while (i <= j) {
-                if (binOf(order[i], axis, low, binsPerUnit) <= bin)
-                    ++i;
-                else {
-                    int swap = order[i];
-                    order[i] = order[j];
-                    order[j--] = swap;
-                }
-            }
-            return i;
+        /** Moves an inner node's link to its children by shift nodes. */
+        private void moveLink(int node, int shift) {
+            if (nodeLinks[2 * node + 1] < 0)
+                nodeLinks[2 * node] += shift;
         }
 
-        private void growBox(double[] box, int b, double[] other, int o) {
+        /** One thread's part of the build: its scratch space, and where its next nodes go. */
+        private final class Splitter {
+            /** Subtrees of at most this many bodies are left for the threads (0: none is). */
+            private final int limit;
+            private int next;
+            private int depth;
+            private final int[] binCounts = new int[BINS];
+            private final double[] binBoxes = new double[6 * BINS];
+            private final double[] rightAreas = new double[BINS];
+            private final double[] centroidBox = new double[6];
+            private final double[] sweep = new double[6];
+
+            Splitter(int next, int limit) {
+                this.next = next;
+                this.limit = limit;
+            }
+
+            /** Makes node the parent of bodies [start, end), splitting it further while that pays off. */
+            void split(int node, int start, int end, int level) {
+                int count = end - start;
+                if (count <= limit) {
+                    defer(node, start, end, level);
+                    return;
+                }
+                depth = Math.max(depth, level);
+                enclose(node, start, end);
+                int axis = widestAxis(centroidBox);
+                double low = centroidBox[axis];
+                double extent = centroidBox[3 + axis] - low;
+                double binsPerUnit = BINS / extent;
+                int bin = count <= MAX_LEAF_SIZE || level >= MAX_DEPTH || !(extent > 0) ? -1
+                        : bestSplit(node, start, end, axis, low, binsPerUnit);
+                int middle = bin < 0 ? start : partition(start, end, axis, low, binsPerUnit, bin);
+                if (middle == start || middle == end) {
+                    nodeLinks[2 * node] = start;
+                    nodeLinks[2 * node + 1] = count;
+                    return;
+                }
+                int left = next;
+                next += 2;
+                nodeLinks[2 * node] = left;
+                nodeLinks[2 * node + 1] = -1 - axis;
+                split(left, start, middle, level + 1);
+                split(left + 1, middle, end, level + 1);
+            }
+
+            /** Sets a node's box around bodies [start, end) and {@link #centroidBox} around their centroids. */
+            private void enclose(int node, int start, int end) {
+                int b = 6 * node;
+                System.arraycopy(EMPTY_BOX, 0, nodeBounds, b, 6);
+                System.arraycopy(EMPTY_BOX, 0, centroidBox, 0, 6);
+                for (int i = start; i < end; ++i) {
+                    int body = order[i];
+                    growBox(nodeBounds, b, boxes, 6 * body);
+                    for (int k = 0; k < 3; ++k) {
+                        centroidBox[k] = Math.min(centroidBox[k], centroids[3 * body + k]);
+                        centroidBox[3 + k] = Math.max(centroidBox[3 + k], centroids[3 * body + k]);
+                    }
+                }
+            }
+
+            private int widestAxis(double[] box) {
+                double x = box[3] - box[0];
+                double y = box[4] - box[1];
+                double z = box[5] - box[2];
+                return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
+            }
+
+            private int binOf(int body, int axis, double low, double binsPerUnit) {
+                return Math.min(BINS - 1, (int) ((centroids[3 * body + axis] - low) * binsPerUnit));
+            }
+
+            /**
+             * The bin after which splitting costs least by the surface-area heuristic, or -1 when no split
+             * is cheaper than a leaf.
+             */
+            private int bestSplit(int node, int start, int end, int axis, double low, double binsPerUnit) {
+                Arrays.fill(binCounts, 0);
+                for (int k = 0; k < BINS; ++k)
+                    System.arraycopy(EMPTY_BOX, 0, binBoxes, 6 * k, 6);
+                for (int i = start; i < end; ++i) {
+                    int body = order[i];
+                    int k = binOf(body, axis, low, binsPerUnit);
+                    ++binCounts[k];
+                    growBox(binBoxes, 6 * k, boxes, 6 * body);
+                }
+                System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
+                for (int k = BINS - 1; k > 0; --k) {
+                    growBox(sweep, 0, binBoxes, 6 * k);
+                    rightAreas[k] = area(sweep, 0);
+                }
+                System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
+                int leftCount = 0;
+                int best = -1;
+                // split when TRAVERSAL_COST·A + Σ n·A(child) beats the leaf's count·A
+                double bestCost = (end - start - TRAVERSAL_COST) * area(nodeBounds, 6 * node);
+                for (int k = 0; k < BINS - 1; ++k) {
+                    growBox(sweep, 0, binBoxes, 6 * k);
+                    leftCount += binCounts[k];
+                    int rightCount = end - start - leftCount;
+                    if (leftCount == 0 || rightCount == 0)
+                        continue;
+                    double cost = leftCount * area(sweep, 0) + rightCount * rightAreas[k + 1];
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        best = k;
+                    }
+                }
+                return best;
+            }
+
+            /** Moves the bodies of bins up to and including bin to the front; returns where the rest start. */
+            private int partition(int start, int end, int axis, double low, double binsPerUnit, int bin) {
+                int i = start;
+                int j = end - 1;
+                while (i <= j) {
+                    if (binOf(order[i], axis, low, binsPerUnit) <= bin)
+                        ++i;
+                    else {
+                        int swap = order[i];
+                        order[i] = order[j];
+                        order[j--] = swap;
+                    }
+                }
+                return i;
+            }
+        }
+
+        private static void growBox(double[] box, int b, double[] other, int o) {
             if (other[o] > other[o + 3])
                 return; // an empty box
             for (int k = 0; k < 3; ++k) {
@@ -631,7 +868,7 @@ public final class BoundingVolumeHierarchy {
         }
 
         /** Half the surface area of a box (the factor 2 does not change which split is best). */
-        private double area(double[] box, int b) {
+        private static double area(double[] box, int b) {
             double x = box[b + 3] - box[b];
             double y = box[b + 4] - box[b + 1];
             double z = box[b + 5] - box[b + 2];
