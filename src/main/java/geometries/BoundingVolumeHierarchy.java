@@ -120,29 +120,41 @@ public final class BoundingVolumeHierarchy {
             infinite.addAll(bounded);
             bounded.clear();
         }
-        this.bodies = bounded.toArray(new Geometry[0]);
+        Geometry[] flat = bounded.toArray(new Geometry[0]);
         this.unbounded = infinite.toArray(new Geometry[0]);
         this.others = generic.toArray(new Intersectable[0]);
         this.culling = tree;
-        Builder builder = new Builder(bodies, threads);
+        Builder builder = new Builder(flat, threads);
         builder.build();
-        this.bodyBounds = builder.bodyBounds;
+        this.bodyBounds = builder.boxes;
         this.nodeBounds = builder.nodeBounds;
         this.nodeLinks = builder.nodeLinks;
         this.nodesCount = builder.nodesCount;
         this.depth = builder.depth;
-        this.triangle = new boolean[bodies.length];
-        this.triangleData = new double[Triangle.DATA_LENGTH * bodies.length];
-        runInChunks(bodies.length, threads, this::copyTriangles);
+        this.bodies = new Geometry[flat.length];
+        this.triangle = new boolean[flat.length];
+        this.triangleData = new double[Triangle.DATA_LENGTH * flat.length];
+        runInChunks(flat.length, threads, (from, to) -> placeBodies(flat, builder.order, from, to));
     }
 
-    /** Copies the data of the plain triangles among bodies [from, to) into {@link #triangleData}. */
-    private void copyTriangles(int from, int to) {
-        for (int b = from; b < to; ++b)
-            if (bodies[b].getClass() == Triangle.class) {
+    /**
+     * Puts bodies [from, to) of the tree in their places in leaf order, and the data of the plain
+     * triangles among them in {@link #triangleData}.
+     *
+     * @param flat  the bodies as they were found in the composite
+     * @param order the places in flat of the bodies in leaf order
+     * @param from  the first place in leaf order
+     * @param to    one past the last
+     */
+    private void placeBodies(Geometry[] flat, int[] order, int from, int to) {
+        for (int b = from; b < to; ++b) {
+            Geometry body = flat[order[b]];
+            bodies[b] = body;
+            if (body.getClass() == Triangle.class) {
                 triangle[b] = true;
-                ((Triangle) bodies[b]).copyData(triangleData, Triangle.DATA_LENGTH * b);
+                ((Triangle) body).copyData(triangleData, Triangle.DATA_LENGTH * b);
             }
+        }
     }
 
     /**
@@ -595,11 +607,13 @@ public final class BoundingVolumeHierarchy {
     /**
      * The top-down build by the binned surface-area heuristic: bodies are reordered so every leaf
      * holds a run of them. The top of the tree is split on the calling thread down to subtrees of at
-     * most a share of the bodies; these are built side by side, largest first, each into a region of
-     * the node arrays big enough for any tree over its bodies (2k − 2 nodes below its root for k
-     * bodies), and the regions are then moved together. A split depends only on the bodies of its
+     * most a share of the bodies; these are built side by side, largest first, each into node arrays
+     * of its own, and then copied after the top's nodes. A split depends only on the bodies of its
      * node, so the tree is the same whatever the number of threads: only where its nodes lie in the
      * arrays differs. Everything lives in flat arrays; nothing is allocated per body or per node.
+     * The bodies' boxes and centroids move with them when they are partitioned, so every pass over a
+     * node's bodies reads memory in order; a child's box and the box around its centroids come from
+     * the bins of its parent's split.
      */
     private static final class Builder {
         /** Each thread gets about this many subtrees, so that one large subtree does not hold up the rest. */
@@ -607,16 +621,18 @@ public final class BoundingVolumeHierarchy {
 
         private final Geometry[] bodies;
         private final int threads;
-        /** The padded box and the centroid of every body, by its place in {@link #bodies} before the build. */
-        private final double[] boxes;
+        /**
+         * The padded box and the centroid of every body, in the order of {@link #order}: once built,
+         * the boxes are in leaf order, a result.
+         */
+        final double[] boxes;
         private final double[] centroids;
-        /** The bodies in leaf order. */
-        private final int[] order;
+        /** The bodies (their places in {@link #bodies}), partitioned into leaf order: a result. */
+        final int[] order;
         /** The subtrees left for the threads, four ints each: node, first body, end, level. */
         private int[] subtrees = new int[4 * SUBTREES_PER_THREAD];
         private int subtreesCount;
-        /** The padded box of every body, in leaf order: the result, with the nodes and the depth. */
-        double[] bodyBounds;
+        /** The nodes and the depth: the results, with the padded boxes of the bodies in leaf order. */
         double[] nodeBounds;
         int[] nodeLinks;
         int nodesCount;
@@ -629,10 +645,8 @@ public final class BoundingVolumeHierarchy {
             this.boxes = new double[6 * count];
             this.centroids = new double[3 * count];
             this.order = new int[count];
-            this.bodyBounds = new double[6 * count];
-            int maxNodes = Math.max(0, 2 * count - 1);
-            this.nodeBounds = new double[6 * maxNodes];
-            this.nodeLinks = new int[2 * maxNodes];
+            this.nodeBounds = new double[0];
+            this.nodeLinks = new int[0];
         }
 
         void build() {
@@ -641,37 +655,20 @@ public final class BoundingVolumeHierarchy {
                 return;
             runInChunks(count, threads, this::measure);
             Splitter top = new Splitter(1, threads == 1 ? count : count / (SUBTREES_PER_THREAD * threads));
-            top.split(0, 0, count, 1);
-            int[] regions = new int[subtreesCount];
-            int free = top.next;
-            for (int t = 0; t < subtreesCount; ++t) {
-                regions[t] = free;
-                free += 2 * (subtrees[4 * t + 2] - subtrees[4 * t + 1]) - 2;
-            }
-            int[] ends = new int[subtreesCount];
-            int[] depths = new int[subtreesCount];
+            top.splitRoot(0, 0, count, 1);
+            Splitter[] parts = new Splitter[subtreesCount];
             int[] largestFirst = IntStream.range(0, subtreesCount).boxed()
                     .sorted(Comparator.comparingInt(t -> subtrees[4 * t + 1] - subtrees[4 * t + 2]))
                     .mapToInt(Integer::intValue).toArray();
             runAll(subtreesCount, threads, k -> {
                 int t = largestFirst[k];
-                Splitter splitter = new Splitter(regions[t], 0);
-                splitter.split(subtrees[4 * t], subtrees[4 * t + 1], subtrees[4 * t + 2], subtrees[4 * t + 3]);
-                ends[t] = splitter.next;
-                depths[t] = splitter.depth;
+                parts[t] = new Splitter(subtrees[4 * t + 2] - subtrees[4 * t + 1], 0);
+                parts[t].splitRoot(0, subtrees[4 * t + 1], subtrees[4 * t + 2], subtrees[4 * t + 3]);
             });
-            depth = Math.max(top.depth, Arrays.stream(depths).max().orElse(0));
-            nodesCount = compact(top.next, regions, ends);
-            nodeBounds = Arrays.copyOf(nodeBounds, 6 * nodesCount);
-            nodeLinks = Arrays.copyOf(nodeLinks, 2 * nodesCount);
-            Geometry[] ordered = new Geometry[count];
-            runInChunks(count, threads, (from, to) -> {
-                for (int i = from; i < to; ++i) {
-                    ordered[i] = bodies[order[i]];
-                    System.arraycopy(boxes, 6 * order[i], bodyBounds, 6 * i, 6);
-                }
-            });
-            System.arraycopy(ordered, 0, bodies, 0, count);
+            depth = top.depth;
+            for (Splitter part : parts)
+                depth = Math.max(depth, part.depth);
+            assemble(top, parts);
         }
 
         /** Sets the padded boxes and the centroids of bodies [from, to). */
@@ -702,119 +699,191 @@ public final class BoundingVolumeHierarchy {
         }
 
         /**
-         * Moves the subtrees' regions together after the top's nodes, and the links into them with
-         * them.
+         * Sets the nodes: the top's, then each subtree's below its root, which takes the place the
+         * top left for it.
          *
-         * @param free    the first node after the top's
-         * @param regions the first node of each subtree's region
-         * @param ends    one past the last node each subtree used
-         * @return the number of nodes
+         * @param top   the top of the tree
+         * @param parts the subtrees, in the order they were left for the threads
          */
-        private int compact(int free, int[] regions, int[] ends) {
-            for (int t = 0; t < subtreesCount; ++t) {
-                int used = ends[t] - regions[t];
-                int shift = free - regions[t];
-                System.arraycopy(nodeBounds, 6 * regions[t], nodeBounds, 6 * free, 6 * used);
-                System.arraycopy(nodeLinks, 2 * regions[t], nodeLinks, 2 * free, 2 * used);
-                for (int node = free; node < free + used; ++node)
-                    moveLink(node, shift);
-                moveLink(subtrees[4 * t], shift);
-                free += used;
+        private void assemble(Splitter top, Splitter[] parts) {
+            nodesCount = top.next;
+            for (Splitter part : parts)
+                nodesCount += part.next - 1;
+            nodeBounds = new double[6 * nodesCount];
+            nodeLinks = new int[2 * nodesCount];
+            System.arraycopy(top.bounds, 0, nodeBounds, 0, 6 * top.next);
+            System.arraycopy(top.links, 0, nodeLinks, 0, 2 * top.next);
+            int free = top.next;
+            for (int t = 0; t < parts.length; ++t) {
+                place(parts[t], 0, subtrees[4 * t], free);
+                for (int node = 1; node < parts[t].next; ++node)
+                    place(parts[t], node, free + node - 1, free);
+                free += parts[t].next - 1;
             }
-            return free;
         }
 
-        /** Moves an inner node's link to its children by shift nodes. */
-        private void moveLink(int node, int shift) {
-            if (nodeLinks[2 * node + 1] < 0)
-                nodeLinks[2 * node] += shift;
+        /**
+         * Copies a node of a subtree into the tree.
+         *
+         * @param part   the subtree
+         * @param node   the node in the subtree
+         * @param target the node in the tree
+         * @param first  where the subtree's node 1 goes in the tree (its nodes after the root follow)
+         */
+        private void place(Splitter part, int node, int target, int first) {
+            System.arraycopy(part.bounds, 6 * node, nodeBounds, 6 * target, 6);
+            int link = part.links[2 * node];
+            int count = part.links[2 * node + 1];
+            nodeLinks[2 * target] = count < 0 ? first + link - 1 : link;
+            nodeLinks[2 * target + 1] = count;
         }
 
         /** One thread's part of the build: its scratch space, and where its next nodes go. */
         private final class Splitter {
             /** Subtrees of at most this many bodies are left for the threads (0: none is). */
             private final int limit;
-            private int next;
+            /** The splitter's nodes, node 0 its root, in the layout of the tree's, and the next free one. */
+            private double[] bounds;
+            private int[] links;
+            private int next = 1;
             private int depth;
             private final int[] binCounts = new int[BINS];
             private final double[] binBoxes = new double[6 * BINS];
+            private final double[] binCentroids = new double[6 * BINS];
             private final double[] rightAreas = new double[BINS];
-            private final double[] centroidBox = new double[6];
             private final double[] sweep = new double[6];
+            /** The boxes around the centroids of the two children of a node at each level. */
+            private final double[] centroidBoxes = new double[12 * (MAX_DEPTH + 2)];
 
-            Splitter(int next, int limit) {
-                this.next = next;
+            /**
+             * Creates a splitter.
+             *
+             * @param bodies about how many bodies it splits: its first room for nodes
+             * @param limit  subtrees of at most this many bodies are left for the threads (0: none is)
+             */
+            Splitter(int bodies, int limit) {
+                int nodes = Math.max(1, bodies);
+                this.bounds = new double[6 * nodes];
+                this.links = new int[2 * nodes];
                 this.limit = limit;
             }
 
-            /** Makes node the parent of bodies [start, end), splitting it further while that pays off. */
-            void split(int node, int start, int end, int level) {
-                int count = end - start;
-                if (count <= limit) {
-                    defer(node, start, end, level);
+            /** {@link #split} for a node whose box is not known yet. */
+            void splitRoot(int node, int start, int end, int level) {
+                if (deferred(node, start, end, level))
                     return;
+                int c = 12 * level;
+                enclose(node, start, end, c);
+                split(node, start, end, level, c);
+            }
+
+            /** Leaves the subtree of node over bodies [start, end) for the threads when it is small enough. */
+            private boolean deferred(int node, int start, int end, int level) {
+                if (end - start > limit)
+                    return false;
+                defer(node, start, end, level);
+                return true;
+            }
+
+            /** Makes room for two more nodes. */
+            private void growNodes() {
+                if (2 * (next + 2) > links.length) {
+                    int nodes = 2 * (next + 2);
+                    bounds = Arrays.copyOf(bounds, 6 * nodes);
+                    links = Arrays.copyOf(links, 2 * nodes);
                 }
+            }
+
+            /**
+             * Makes node the parent of bodies [start, end), splitting it further while that pays off.
+             *
+             * @param c where the box around the bodies' centroids lies in {@link #centroidBoxes}
+             */
+            private void split(int node, int start, int end, int level, int c) {
+                if (deferred(node, start, end, level))
+                    return;
+                int count = end - start;
                 depth = Math.max(depth, level);
-                enclose(node, start, end);
-                int axis = widestAxis(centroidBox);
-                double low = centroidBox[axis];
-                double extent = centroidBox[3 + axis] - low;
+                int axis = widestAxis(centroidBoxes, c);
+                double low = centroidBoxes[c + axis];
+                double extent = centroidBoxes[c + 3 + axis] - low;
                 double binsPerUnit = BINS / extent;
                 int bin = count <= MAX_LEAF_SIZE || level >= MAX_DEPTH || !(extent > 0) ? -1
                         : bestSplit(node, start, end, axis, low, binsPerUnit);
-                int middle = bin < 0 ? start : partition(start, end, axis, low, binsPerUnit, bin);
-                if (middle == start || middle == end) {
-                    nodeLinks[2 * node] = start;
-                    nodeLinks[2 * node + 1] = count;
+                if (bin < 0) {
+                    links[2 * node] = start;
+                    links[2 * node + 1] = count;
                     return;
                 }
+                int middle = partition(start, end, axis, low, binsPerUnit, bin);
+                growNodes();
                 int left = next;
                 next += 2;
-                nodeLinks[2 * node] = left;
-                nodeLinks[2 * node + 1] = -1 - axis;
-                split(left, start, middle, level + 1);
-                split(left + 1, middle, end, level + 1);
+                links[2 * node] = left;
+                links[2 * node + 1] = -1 - axis;
+                int leftCentroids = 12 * (level + 1);
+                int rightCentroids = leftCentroids + 6;
+                unionOfBins(binBoxes, 0, bin + 1, bounds, 6 * left);
+                unionOfBins(binBoxes, bin + 1, BINS, bounds, 6 * left + 6);
+                unionOfBins(binCentroids, 0, bin + 1, centroidBoxes, leftCentroids);
+                unionOfBins(binCentroids, bin + 1, BINS, centroidBoxes, rightCentroids);
+                split(left, start, middle, level + 1, leftCentroids);
+                split(left + 1, middle, end, level + 1, rightCentroids);
             }
 
-            /** Sets a node's box around bodies [start, end) and {@link #centroidBox} around their centroids. */
-            private void enclose(int node, int start, int end) {
+            /** Sets a node's box around bodies [start, end) and the box at c around their centroids. */
+            private void enclose(int node, int start, int end, int c) {
                 int b = 6 * node;
-                System.arraycopy(EMPTY_BOX, 0, nodeBounds, b, 6);
-                System.arraycopy(EMPTY_BOX, 0, centroidBox, 0, 6);
+                System.arraycopy(EMPTY_BOX, 0, bounds, b, 6);
+                System.arraycopy(EMPTY_BOX, 0, centroidBoxes, c, 6);
                 for (int i = start; i < end; ++i) {
-                    int body = order[i];
-                    growBox(nodeBounds, b, boxes, 6 * body);
-                    for (int k = 0; k < 3; ++k) {
-                        centroidBox[k] = Math.min(centroidBox[k], centroids[3 * body + k]);
-                        centroidBox[3 + k] = Math.max(centroidBox[3 + k], centroids[3 * body + k]);
-                    }
+                    growBox(bounds, b, boxes, 6 * i);
+                    growByPoint(centroidBoxes, c, i);
                 }
             }
 
-            private int widestAxis(double[] box) {
-                double x = box[3] - box[0];
-                double y = box[4] - box[1];
-                double z = box[5] - box[2];
+            /** Grows the box at b around the centroid of the body at place i. */
+            private void growByPoint(double[] box, int b, int i) {
+                for (int k = 0; k < 3; ++k) {
+                    box[b + k] = Math.min(box[b + k], centroids[3 * i + k]);
+                    box[b + 3 + k] = Math.max(box[b + 3 + k], centroids[3 * i + k]);
+                }
+            }
+
+            /** Sets the box at b of target around the boxes of bins [from, to) of bins. */
+            private void unionOfBins(double[] bins, int from, int to, double[] target, int b) {
+                System.arraycopy(EMPTY_BOX, 0, target, b, 6);
+                for (int k = from; k < to; ++k)
+                    growBox(target, b, bins, 6 * k);
+            }
+
+            private int widestAxis(double[] box, int b) {
+                double x = box[b + 3] - box[b];
+                double y = box[b + 4] - box[b + 1];
+                double z = box[b + 5] - box[b + 2];
                 return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
             }
 
-            private int binOf(int body, int axis, double low, double binsPerUnit) {
-                return Math.min(BINS - 1, (int) ((centroids[3 * body + axis] - low) * binsPerUnit));
+            private int binOf(int i, int axis, double low, double binsPerUnit) {
+                return Math.min(BINS - 1, (int) ((centroids[3 * i + axis] - low) * binsPerUnit));
             }
 
             /**
              * The bin after which splitting costs least by the surface-area heuristic, or -1 when no split
-             * is cheaper than a leaf.
+             * is cheaper than a leaf. Leaves the bins' bodies counted and their boxes and the boxes
+             * around their centroids set.
              */
             private int bestSplit(int node, int start, int end, int axis, double low, double binsPerUnit) {
                 Arrays.fill(binCounts, 0);
-                for (int k = 0; k < BINS; ++k)
+                for (int k = 0; k < BINS; ++k) {
                     System.arraycopy(EMPTY_BOX, 0, binBoxes, 6 * k, 6);
+                    System.arraycopy(EMPTY_BOX, 0, binCentroids, 6 * k, 6);
+                }
                 for (int i = start; i < end; ++i) {
-                    int body = order[i];
-                    int k = binOf(body, axis, low, binsPerUnit);
+                    int k = binOf(i, axis, low, binsPerUnit);
                     ++binCounts[k];
-                    growBox(binBoxes, 6 * k, boxes, 6 * body);
+                    growBox(binBoxes, 6 * k, boxes, 6 * i);
+                    growByPoint(binCentroids, 6 * k, i);
                 }
                 System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
                 for (int k = BINS - 1; k > 0; --k) {
@@ -825,7 +894,7 @@ public final class BoundingVolumeHierarchy {
                 int leftCount = 0;
                 int best = -1;
                 // split when TRAVERSAL_COST·A + Σ n·A(child) beats the leaf's count·A
-                double bestCost = (end - start - TRAVERSAL_COST) * area(nodeBounds, 6 * node);
+                double bestCost = (end - start - TRAVERSAL_COST) * area(bounds, 6 * node);
                 for (int k = 0; k < BINS - 1; ++k) {
                     growBox(sweep, 0, binBoxes, 6 * k);
                     leftCount += binCounts[k];
@@ -841,20 +910,37 @@ public final class BoundingVolumeHierarchy {
                 return best;
             }
 
-            /** Moves the bodies of bins up to and including bin to the front; returns where the rest start. */
+            /**
+             * Moves the bodies of bins up to and including bin to the front, their boxes and centroids
+             * with them; returns where the rest start.
+             */
             private int partition(int start, int end, int axis, double low, double binsPerUnit, int bin) {
                 int i = start;
                 int j = end - 1;
                 while (i <= j) {
-                    if (binOf(order[i], axis, low, binsPerUnit) <= bin)
+                    if (binOf(i, axis, low, binsPerUnit) <= bin)
                         ++i;
-                    else {
-                        int swap = order[i];
-                        order[i] = order[j];
-                        order[j--] = swap;
-                    }
+                    else
+                        swap(i, j--);
                 }
                 return i;
+            }
+
+            /** Swaps the bodies at places i and j, with their boxes and centroids. */
+            private void swap(int i, int j) {
+                int body = order[i];
+                order[i] = order[j];
+                order[j] = body;
+                swapRun(boxes, 6 * i, 6 * j, 6);
+                swapRun(centroids, 3 * i, 3 * j, 3);
+            }
+
+            private void swapRun(double[] values, int a, int b, int length) {
+                for (int k = 0; k < length; ++k) {
+                    double value = values[a + k];
+                    values[a + k] = values[b + k];
+                    values[b + k] = value;
+                }
             }
         }
 
