@@ -1372,11 +1372,13 @@ class BoundingVolumeHierarchyTest {
      * @param rnd     the generator
      * @param scene   the scene
      * @param opaque  whether every body is opaque (the answers are then exactly 0 or 1)
+     * @param threads the number of threads the hierarchy is built on
      * @param counts  the counters to add to
      * @param tc      the test-case label
      */
-    private static void checkBundles(Random rnd, TestScene scene, boolean opaque, GatherCounts counts, String tc) {
-        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries());
+    private static void checkBundles(Random rnd, TestScene scene, boolean opaque, int threads, GatherCounts counts,
+                                     String tc) {
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries(), threads);
         Query query = bvh.newQuery();
         Query treeQuery = bvh.newQuery();
         ShadowFrustum frustum = query.getFrustum();
@@ -1484,19 +1486,20 @@ class BoundingVolumeHierarchyTest {
         Random rnd = new Random(7031);
         GatherCounts opaque = new GatherCounts();
         for (int s : new int[] { 0, 2, 3, 5, 6, 7, 8, 9, 13, 15, 17, 19 })
-            checkBundles(rnd, randomScene(rnd, s), true, opaque, "TC01: scene " + s);
+            checkBundles(rnd, randomScene(rnd, s), true, 1, opaque, "TC01: scene " + s);
         for (int m = 0; m < 2; ++m)
-            checkBundles(rnd, meshScene(rnd), true, opaque, "TC01: mesh scene " + m);
+            checkBundles(rnd, meshScene(rnd), true, 1, opaque, "TC01: mesh scene " + m);
         assertCounts(opaque, "TC01");
 
-        // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque): equal within 1e-12
+        // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque), the hierarchy built on 3
+        // threads: equal within 1e-12
         double[] kts = { 0.5, 0.9, 0.25, 1, 0.75, 0.999, 0.5, 0.9, 0 };
         GatherCounts transparent = new GatherCounts();
         for (int s : new int[] { 0, 2, 4, 5, 6, 8, 9, 13, 15, 18, 19, -1, -1 }) {
             TestScene scene = s < 0 ? meshScene(rnd) : randomScene(rnd, s);
             for (Intersectable body : scene.bodies())
                 setKt(body, kts, rnd);
-            checkBundles(rnd, scene, false, transparent, "TC02: " + (s < 0 ? "mesh scene" : "scene " + s));
+            checkBundles(rnd, scene, false, 3, transparent, "TC02: " + (s < 0 ? "mesh scene" : "scene " + s));
         }
         assertCounts(transparent, "TC02");
     }
