@@ -18,8 +18,9 @@ import static primitives.Util.requireNonNull;
 
 /**
  * A bounding volume hierarchy over the bodies of a composite, the way a ray tracer finds what a ray
- * hits without testing every body. Built once (per render) from the scene's {@link Geometries},
- * which stays the user-facing composite.
+ * hits without testing every body. Built from the scene's {@link Geometries}, which stays the
+ * user-facing composite, once per scene: again only when bodies are added (see {@link #isBuiltFrom}).
+ * The build can share its work among threads ({@link #build(Intersectable, int)}).
  * <p>
  * The tree lives in flat arrays (a node's box, its first body or first child, its body count and
  * split axis; the two children of a node are neighbours) and is walked with an explicit stack: at an
