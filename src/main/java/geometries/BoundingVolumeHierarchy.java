@@ -1,7 +1,13 @@
 package geometries;
 
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.IntConsumer;
+import java.util.stream.IntStream;
 
 import geometries.Intersectable.GeoPoint;
 import primitives.Point3D;
@@ -12,8 +18,9 @@ import static primitives.Util.requireNonNull;
 
 /**
  * A bounding volume hierarchy over the bodies of a composite, the way a ray tracer finds what a ray
- * hits without testing every body. Built once (per render) from the scene's {@link Geometries},
- * which stays the user-facing composite.
+ * hits without testing every body. Built from the scene's {@link Geometries}, which stays the
+ * user-facing composite, once per scene: again only when bodies are added (see {@link #isBuiltFrom}).
+ * The build can share its work among threads ({@link #build(Intersectable, int)}).
  * <p>
  * The tree lives in flat arrays (a node's box, its first body or first child, its body count and
  * split axis; the two children of a node are neighbours) and is walked with an explicit stack: at an
@@ -45,6 +52,12 @@ public final class BoundingVolumeHierarchy {
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
 
+    /** The bodies of one chunk of the work shared out among threads during the build. */
+    private static final int CHUNK = 8192;
+
+    /** The composite the hierarchy was built over, and the version of its contents then. */
+    private final Intersectable source;
+    private final long version;
     private final Geometry[] bodies;
     /** The padded box of every body of the tree, in leaf order. */
     private final double[] bodyBounds;
@@ -62,8 +75,8 @@ public final class BoundingVolumeHierarchy {
      * child (its right child is the node after it) and −1 − its split axis.
      */
     private final int[] nodeLinks;
-    private int nodesCount;
-    private int depth;
+    private final int nodesCount;
+    private final int depth;
 
     /**
      * Per-thread scratch space of queries: the traversal stack and the running result. Get one from
@@ -95,42 +108,77 @@ public final class BoundingVolumeHierarchy {
         }
     }
 
-    private BoundingVolumeHierarchy(Intersectable scene, boolean tree) {
+    private BoundingVolumeHierarchy(Intersectable scene, boolean tree, int threads) {
+        if (threads < 1)
+            throw new IllegalArgumentException("threads must be 1 or more, got " + threads);
+        this.source = requireNonNull(scene, "geometries");
+        this.version = versionOf(scene);
         List<Geometry> bounded = new ArrayList<>();
         List<Geometry> infinite = new ArrayList<>();
         List<Intersectable> generic = new ArrayList<>();
-        flatten(requireNonNull(scene, "geometries"), bounded, infinite, generic);
+        flatten(scene, bounded, infinite, generic, new double[6]);
         if (!tree) {
             infinite.addAll(bounded);
             bounded.clear();
         }
-        this.bodies = bounded.toArray(new Geometry[0]);
+        Geometry[] flat = bounded.toArray(new Geometry[0]);
         this.unbounded = infinite.toArray(new Geometry[0]);
         this.others = generic.toArray(new Intersectable[0]);
         this.culling = tree;
-        this.bodyBounds = new double[6 * bodies.length];
-        int maxNodes = Math.max(1, 2 * bodies.length);
-        this.nodeBounds = new double[6 * maxNodes];
-        this.nodeLinks = new int[2 * maxNodes];
-        if (bodies.length > 0)
-            new Builder().build();
-        this.triangle = new boolean[bodies.length];
-        this.triangleData = new double[Triangle.DATA_LENGTH * bodies.length];
-        for (int b = 0; b < bodies.length; ++b)
-            if (bodies[b].getClass() == Triangle.class) {
-                triangle[b] = true;
-                ((Triangle) bodies[b]).copyData(triangleData, Triangle.DATA_LENGTH * b);
-            }
+        Builder builder = new Builder(flat, threads);
+        builder.build();
+        this.bodyBounds = builder.boxes;
+        this.nodeBounds = builder.nodeBounds;
+        this.nodeLinks = builder.nodeLinks;
+        this.nodesCount = builder.nodesCount;
+        this.depth = builder.depth;
+        this.bodies = new Geometry[flat.length];
+        this.triangle = new boolean[flat.length];
+        this.triangleData = new double[Triangle.DATA_LENGTH * flat.length];
+        runInChunks(flat.length, threads, (from, to) -> placeBodies(flat, builder.order, from, to));
     }
 
     /**
-     * Builds the hierarchy over a composite's bodies.
+     * Puts bodies [from, to) of the tree in their places in leaf order, and the data of the plain
+     * triangles among them in {@link #triangleData}.
+     *
+     * @param flat  the bodies as they were found in the composite
+     * @param order the places in flat of the bodies in leaf order
+     * @param from  the first place in leaf order
+     * @param to    one past the last
+     */
+    private void placeBodies(Geometry[] flat, int[] order, int from, int to) {
+        for (int b = from; b < to; ++b) {
+            Geometry body = flat[order[b]];
+            bodies[b] = body;
+            if (body.getClass() == Triangle.class) {
+                triangle[b] = true;
+                ((Triangle) body).copyData(triangleData, Triangle.DATA_LENGTH * b);
+            }
+        }
+    }
+
+    /**
+     * Builds the hierarchy over a composite's bodies on the calling thread.
      *
      * @param geometries the composite (or a single body)
      * @return the hierarchy
      */
     public static BoundingVolumeHierarchy build(Intersectable geometries) {
-        return new BoundingVolumeHierarchy(geometries, true);
+        return build(geometries, 1);
+    }
+
+    /**
+     * Builds the hierarchy over a composite's bodies on several threads: the top of the tree on the
+     * calling thread, then its subtrees side by side. The tree answers every query as the one built
+     * on one thread does.
+     *
+     * @param geometries the composite (or a single body)
+     * @param threads    the number of threads, 1 or more (the calling thread is one of them)
+     * @return the hierarchy
+     */
+    public static BoundingVolumeHierarchy build(Intersectable geometries, int threads) {
+        return new BoundingVolumeHierarchy(geometries, true, threads);
     }
 
     /**
@@ -140,18 +188,91 @@ public final class BoundingVolumeHierarchy {
      * @return the linear scan
      */
     public static BoundingVolumeHierarchy scan(Intersectable geometries) {
-        return new BoundingVolumeHierarchy(geometries, false);
+        return new BoundingVolumeHierarchy(geometries, false, 1);
+    }
+
+    /**
+     * Whether the hierarchy was built over this composite as it is now: the same object, and no body
+     * added to it, or to a composite in it, since. Renders build once and ask this before each frame.
+     *
+     * @param geometries the composite
+     * @return true when the hierarchy is up to date for it
+     */
+    public boolean isBuiltFrom(Intersectable geometries) {
+        return geometries == source && versionOf(geometries) == version;
+    }
+
+    /** {@return the version of a composite's contents (0 for a single body, which never changes)} */
+    private static long versionOf(Intersectable geometries) {
+        return geometries instanceof Geometries composite ? composite.version() : 0;
     }
 
     private static void flatten(Intersectable item, List<Geometry> bounded, List<Geometry> infinite,
-                                List<Intersectable> generic) {
+                                List<Intersectable> generic, double[] box) {
         if (item instanceof Geometries composite)
             for (Intersectable child : composite.getGeometries())
-                flatten(child, bounded, infinite, generic);
+                flatten(child, bounded, infinite, generic, box);
         else if (item instanceof Geometry geometry)
-            (geometry.bounds() == null ? infinite : bounded).add(geometry);
+            (geometry.bounds(box, 0) ? bounded : infinite).add(geometry);
         else
             generic.add(item);
+    }
+
+    /**
+     * Runs a job over ranges [from, to) of count items, a chunk at a time, on up to threads threads.
+     *
+     * @param count   the number of items
+     * @param threads the number of threads
+     * @param job     the job, called with each chunk's first item and one past its last
+     */
+    private static void runInChunks(int count, int threads, ChunkJob job) {
+        int chunks = (count + CHUNK - 1) / CHUNK;
+        runAll(chunks, threads, c -> job.run(c * CHUNK, Math.min(count, (c + 1) * CHUNK)));
+    }
+
+    /** A job over a range of items, see {@link #runInChunks}. */
+    @FunctionalInterface
+    private interface ChunkJob {
+        void run(int from, int to);
+    }
+
+    /**
+     * Runs tasks 0 to count − 1, each once, on up to threads threads: the calling one and as many
+     * more as needed. Each thread takes the next task left until none is; the first failure is
+     * thrown again on the calling thread.
+     *
+     * @param count   the number of tasks
+     * @param threads the number of threads
+     * @param task    the task, called with its number
+     */
+    private static void runAll(int count, int threads, IntConsumer task) {
+        AtomicInteger next = new AtomicInteger();
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Runnable worker = () -> {
+            try {
+                for (int t = next.getAndIncrement(); t < count && failure.get() == null; t = next.getAndIncrement())
+                    task.accept(t);
+            } catch (RuntimeException | Error e) { // thrown again by the calling thread
+                failure.compareAndSet(null, e);
+            }
+        };
+        Thread[] helpers = new Thread[Math.max(0, Math.min(threads, count) - 1)];
+        for (int h = 0; h < helpers.length; ++h) {
+            helpers[h] = new Thread(worker, "hierarchy-build-" + h);
+            helpers[h].start();
+        }
+        worker.run();
+        try {
+            for (Thread helper : helpers)
+                helper.join();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("building the hierarchy was interrupted", e);
+        }
+        if (failure.get() instanceof RuntimeException e)
+            throw e;
+        if (failure.get() instanceof Error e)
+            throw e;
     }
 
     /** {@return a fresh scratch space for queries on this hierarchy} */
@@ -484,144 +605,347 @@ public final class BoundingVolumeHierarchy {
         return near <= far;
     }
 
-    /** The top-down build: bodies are reordered so every leaf holds a run of them. */
-    private final class Builder {
-        private final double[] boxes = new double[6 * bodies.length];
-        private final double[] centroids = new double[3 * bodies.length];
-        private final int[] order = new int[bodies.length];
-        private final int[] binCounts = new int[BINS];
-        private final double[] binBoxes = new double[6 * BINS];
-        private final double[] rightAreas = new double[BINS];
+    /**
+     * The top-down build by the binned surface-area heuristic: bodies are reordered so every leaf
+     * holds a run of them. The top of the tree is split on the calling thread down to subtrees of at
+     * most a share of the bodies; these are built side by side, largest first, each into node arrays
+     * of its own, and then copied after the top's nodes. A split depends only on the bodies of its
+     * node, so the tree is the same whatever the number of threads: only where its nodes lie in the
+     * arrays differs. Everything lives in flat arrays; nothing is allocated per body or per node.
+     * The bodies' boxes and centroids move with them when they are partitioned, so every pass over a
+     * node's bodies reads memory in order; a child's box and the box around its centroids come from
+     * the bins of its parent's split.
+     */
+    private static final class Builder {
+        /** Each thread gets about this many subtrees, so that one large subtree does not hold up the rest. */
+        private static final int SUBTREES_PER_THREAD = 4;
+
+        private final Geometry[] bodies;
+        private final int threads;
+        /**
+         * The padded box and the centroid of every body, in the order of {@link #order}: once built,
+         * the boxes are in leaf order, a result.
+         */
+        final double[] boxes;
+        private final double[] centroids;
+        /** The bodies (their places in {@link #bodies}), partitioned into leaf order: a result. */
+        final int[] order;
+        /** The subtrees left for the threads, four ints each: node, first body, end, level. */
+        private int[] subtrees = new int[4 * SUBTREES_PER_THREAD];
+        private int subtreesCount;
+        /** The nodes and the depth: the results, with the padded boxes of the bodies in leaf order. */
+        double[] nodeBounds;
+        int[] nodeLinks;
+        int nodesCount;
+        int depth;
+
+        Builder(Geometry[] bodies, int threads) {
+            this.bodies = bodies;
+            this.threads = threads;
+            int count = bodies.length;
+            this.boxes = new double[6 * count];
+            this.centroids = new double[3 * count];
+            this.order = new int[count];
+            this.nodeBounds = new double[0];
+            this.nodeLinks = new int[0];
+        }
 
         void build() {
-            for (int i = 0; i < bodies.length; ++i) {
-                double[] box = bodies[i].bounds();
+            int count = bodies.length;
+            if (count == 0)
+                return;
+            runInChunks(count, threads, this::measure);
+            Splitter top = new Splitter(1, threads == 1 ? count : count / (SUBTREES_PER_THREAD * threads));
+            top.splitRoot(0, 0, count, 1);
+            Splitter[] parts = new Splitter[subtreesCount];
+            int[] largestFirst = IntStream.range(0, subtreesCount).boxed()
+                    .sorted(Comparator.comparingInt(t -> subtrees[4 * t + 1] - subtrees[4 * t + 2]))
+                    .mapToInt(Integer::intValue).toArray();
+            runAll(subtreesCount, threads, k -> {
+                int t = largestFirst[k];
+                parts[t] = new Splitter(subtrees[4 * t + 2] - subtrees[4 * t + 1], 0);
+                parts[t].splitRoot(0, subtrees[4 * t + 1], subtrees[4 * t + 2], subtrees[4 * t + 3]);
+            });
+            depth = top.depth;
+            for (Splitter part : parts)
+                depth = Math.max(depth, part.depth);
+            assemble(top, parts);
+        }
+
+        /** Sets the padded boxes and the centroids of bodies [from, to). */
+        private void measure(int from, int to) {
+            for (int i = from; i < to; ++i) {
+                bodies[i].bounds(boxes, 6 * i);
                 for (int k = 0; k < 3; ++k) {
-                    double pad = PADDING * (1 + Math.abs(box[k]) + Math.abs(box[3 + k]));
-                    boxes[6 * i + k] = box[k] - pad;
-                    boxes[6 * i + 3 + k] = box[3 + k] + pad;
-                    centroids[3 * i + k] = (box[k] + box[3 + k]) / 2;
+                    double low = boxes[6 * i + k];
+                    double high = boxes[6 * i + 3 + k];
+                    double pad = PADDING * (1 + Math.abs(low) + Math.abs(high));
+                    boxes[6 * i + k] = low - pad;
+                    boxes[6 * i + 3 + k] = high + pad;
+                    centroids[3 * i + k] = (low + high) / 2;
                 }
                 order[i] = i;
             }
-            nodesCount = 1;
-            split(0, 0, bodies.length, 1);
-            Geometry[] ordered = new Geometry[bodies.length];
-            for (int i = 0; i < bodies.length; ++i) {
-                ordered[i] = bodies[order[i]];
-                System.arraycopy(boxes, 6 * order[i], bodyBounds, 6 * i, 6);
-            }
-            System.arraycopy(ordered, 0, bodies, 0, bodies.length);
         }
 
-        /** Makes node the parent of bodies [start, end), splitting it further while that pays off. */
-        private void split(int node, int start, int end, int level) {
-            depth = Math.max(depth, level);
-            double[] centroidBox = enclose(node, start, end);
-            int axis = widestAxis(centroidBox);
-            double low = centroidBox[axis];
-            double extent = centroidBox[3 + axis] - low;
-            int count = end - start;
-            double binsPerUnit = BINS / extent;
-            int bin = count <= MAX_LEAF_SIZE || level >= MAX_DEPTH || !(extent > 0) ? -1
-                    : bestSplit(node, start, end, axis, low, binsPerUnit);
-            int middle = bin < 0 ? start : partition(start, end, axis, low, binsPerUnit, bin);
-            if (middle == start || middle == end) {
-                nodeLinks[2 * node] = start;
-                nodeLinks[2 * node + 1] = count;
-                return;
-            }
-            int left = nodesCount;
-            nodesCount += 2;
-            nodeLinks[2 * node] = left;
-            nodeLinks[2 * node + 1] = -1 - axis;
-            split(left, start, middle, level + 1);
-            split(left + 1, middle, end, level + 1);
-        }
-
-        /** Sets a node's box around bodies [start, end) and returns the box around their centroids. */
-        private double[] enclose(int node, int start, int end) {
-            double[] centroidBox = EMPTY_BOX.clone();
-            int b = 6 * node;
-            System.arraycopy(EMPTY_BOX, 0, nodeBounds, b, 6);
-            for (int i = start; i < end; ++i) {
-                int body = order[i];
-                growBox(nodeBounds, b, boxes, 6 * body);
-                for (int k = 0; k < 3; ++k) {
-                    centroidBox[k] = Math.min(centroidBox[k], centroids[3 * body + k]);
-                    centroidBox[3 + k] = Math.max(centroidBox[3 + k], centroids[3 * body + k]);
-                }
-            }
-            return centroidBox;
-        }
-
-        private int widestAxis(double[] box) {
-            double x = box[3] - box[0];
-            double y = box[4] - box[1];
-            double z = box[5] - box[2];
-            return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
-        }
-
-        private int binOf(int body, int axis, double low, double binsPerUnit) {
-            return Math.min(BINS - 1, (int) ((centroids[3 * body + axis] - low) * binsPerUnit));
+        /** Leaves the subtree of node over bodies [start, end) for the threads. */
+        private void defer(int node, int start, int end, int level) {
+            if (4 * subtreesCount == subtrees.length)
+                subtrees = Arrays.copyOf(subtrees, 2 * subtrees.length);
+            subtrees[4 * subtreesCount] = node;
+            subtrees[4 * subtreesCount + 1] = start;
+            subtrees[4 * subtreesCount + 2] = end;
+            subtrees[4 * subtreesCount + 3] = level;
+            ++subtreesCount;
         }
 
         /**
-         * The bin after which splitting costs least by the surface-area heuristic, or -1 when no split
-         * is cheaper than a leaf.
+         * Sets the nodes: the top's, then each subtree's below its root, which takes the place the
+         * top left for it.
+         *
+         * @param top   the top of the tree
+         * @param parts the subtrees, in the order they were left for the threads
          */
-        private int bestSplit(int node, int start, int end, int axis, double low, double binsPerUnit) {
-            java.util.Arrays.fill(binCounts, 0);
-            for (int k = 0; k < BINS; ++k)
-                System.arraycopy(EMPTY_BOX, 0, binBoxes, 6 * k, 6);
-            for (int i = start; i < end; ++i) {
+        private void assemble(Splitter top, Splitter[] parts) {
+            nodesCount = top.next;
+            for (Splitter part : parts)
+                nodesCount += part.next - 1;
+            nodeBounds = new double[6 * nodesCount];
+            nodeLinks = new int[2 * nodesCount];
+            System.arraycopy(top.bounds, 0, nodeBounds, 0, 6 * top.next);
+            System.arraycopy(top.links, 0, nodeLinks, 0, 2 * top.next);
+            int free = top.next;
+            for (int t = 0; t < parts.length; ++t) {
+                place(parts[t], 0, subtrees[4 * t], free);
+                for (int node = 1; node < parts[t].next; ++node)
+                    place(parts[t], node, free + node - 1, free);
+                free += parts[t].next - 1;
+            }
+        }
+
+        /**
+         * Copies a node of a subtree into the tree.
+         *
+         * @param part   the subtree
+         * @param node   the node in the subtree
+         * @param target the node in the tree
+         * @param first  where the subtree's node 1 goes in the tree (its nodes after the root follow)
+         */
+        private void place(Splitter part, int node, int target, int first) {
+            System.arraycopy(part.bounds, 6 * node, nodeBounds, 6 * target, 6);
+            int link = part.links[2 * node];
+            int count = part.links[2 * node + 1];
+            nodeLinks[2 * target] = count < 0 ? first + link - 1 : link;
+            nodeLinks[2 * target + 1] = count;
+        }
+
+        /** One thread's part of the build: its scratch space, and where its next nodes go. */
+        private final class Splitter {
+            /** Subtrees of at most this many bodies are left for the threads (0: none is). */
+            private final int limit;
+            /** The splitter's nodes, node 0 its root, in the layout of the tree's, and the next free one. */
+            private double[] bounds;
+            private int[] links;
+            private int next = 1;
+            private int depth;
+            private final int[] binCounts = new int[BINS];
+            private final double[] binBoxes = new double[6 * BINS];
+            private final double[] binCentroids = new double[6 * BINS];
+            private final double[] rightAreas = new double[BINS];
+            private final double[] sweep = new double[6];
+            /** The boxes around the centroids of the two children of a node at each level. */
+            private final double[] centroidBoxes = new double[12 * (MAX_DEPTH + 2)];
+
+            /**
+             * Creates a splitter.
+             *
+             * @param bodies about how many bodies it splits: its first room for nodes
+             * @param limit  subtrees of at most this many bodies are left for the threads (0: none is)
+             */
+            Splitter(int bodies, int limit) {
+                int nodes = Math.max(1, bodies);
+                this.bounds = new double[6 * nodes];
+                this.links = new int[2 * nodes];
+                this.limit = limit;
+            }
+
+            /** {@link #split} for a node whose box is not known yet. */
+            void splitRoot(int node, int start, int end, int level) {
+                if (deferred(node, start, end, level))
+                    return;
+                int c = 12 * level;
+                enclose(node, start, end, c);
+                split(node, start, end, level, c);
+            }
+
+            /** Leaves the subtree of node over bodies [start, end) for the threads when it is small enough. */
+            private boolean deferred(int node, int start, int end, int level) {
+                if (end - start > limit)
+                    return false;
+                defer(node, start, end, level);
+                return true;
+            }
+
+            /** Makes room for two more nodes. */
+            private void growNodes() {
+                if (2 * (next + 2) > links.length) {
+                    int nodes = 2 * (next + 2);
+                    bounds = Arrays.copyOf(bounds, 6 * nodes);
+                    links = Arrays.copyOf(links, 2 * nodes);
+                }
+            }
+
+            /**
+             * Makes node the parent of bodies [start, end), splitting it further while that pays off.
+             *
+             * @param c where the box around the bodies' centroids lies in {@link #centroidBoxes}
+             */
+            private void split(int node, int start, int end, int level, int c) {
+                if (deferred(node, start, end, level))
+                    return;
+                int count = end - start;
+                depth = Math.max(depth, level);
+                int axis = widestAxis(centroidBoxes, c);
+                double low = centroidBoxes[c + axis];
+                double extent = centroidBoxes[c + 3 + axis] - low;
+                double binsPerUnit = BINS / extent;
+                int bin = count <= MAX_LEAF_SIZE || level >= MAX_DEPTH || !(extent > 0) ? -1
+                        : bestSplit(node, start, end, axis, low, binsPerUnit);
+                if (bin < 0) {
+                    links[2 * node] = start;
+                    links[2 * node + 1] = count;
+                    return;
+                }
+                int middle = partition(start, end, axis, low, binsPerUnit, bin);
+                growNodes();
+                int left = next;
+                next += 2;
+                links[2 * node] = left;
+                links[2 * node + 1] = -1 - axis;
+                int leftCentroids = 12 * (level + 1);
+                int rightCentroids = leftCentroids + 6;
+                unionOfBins(binBoxes, 0, bin + 1, bounds, 6 * left);
+                unionOfBins(binBoxes, bin + 1, BINS, bounds, 6 * left + 6);
+                unionOfBins(binCentroids, 0, bin + 1, centroidBoxes, leftCentroids);
+                unionOfBins(binCentroids, bin + 1, BINS, centroidBoxes, rightCentroids);
+                split(left, start, middle, level + 1, leftCentroids);
+                split(left + 1, middle, end, level + 1, rightCentroids);
+            }
+
+            /** Sets a node's box around bodies [start, end) and the box at c around their centroids. */
+            private void enclose(int node, int start, int end, int c) {
+                int b = 6 * node;
+                System.arraycopy(EMPTY_BOX, 0, bounds, b, 6);
+                System.arraycopy(EMPTY_BOX, 0, centroidBoxes, c, 6);
+                for (int i = start; i < end; ++i) {
+                    growBox(bounds, b, boxes, 6 * i);
+                    growByPoint(centroidBoxes, c, i);
+                }
+            }
+
+            /** Grows the box at b around the centroid of the body at place i. */
+            private void growByPoint(double[] box, int b, int i) {
+                for (int k = 0; k < 3; ++k) {
+                    box[b + k] = Math.min(box[b + k], centroids[3 * i + k]);
+                    box[b + 3 + k] = Math.max(box[b + 3 + k], centroids[3 * i + k]);
+                }
+            }
+
+            /** Sets the box at b of target around the boxes of bins [from, to) of bins. */
+            private void unionOfBins(double[] bins, int from, int to, double[] target, int b) {
+                System.arraycopy(EMPTY_BOX, 0, target, b, 6);
+                for (int k = from; k < to; ++k)
+                    growBox(target, b, bins, 6 * k);
+            }
+
+            private int widestAxis(double[] box, int b) {
+                double x = box[b + 3] - box[b];
+                double y = box[b + 4] - box[b + 1];
+                double z = box[b + 5] - box[b + 2];
+                return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
+            }
+
+            private int binOf(int i, int axis, double low, double binsPerUnit) {
+                return Math.min(BINS - 1, (int) ((centroids[3 * i + axis] - low) * binsPerUnit));
+            }
+
+            /**
+             * The bin after which splitting costs least by the surface-area heuristic, or -1 when no split
+             * is cheaper than a leaf. Leaves the bins' bodies counted and their boxes and the boxes
+             * around their centroids set.
+             */
+            private int bestSplit(int node, int start, int end, int axis, double low, double binsPerUnit) {
+                Arrays.fill(binCounts, 0);
+                for (int k = 0; k < BINS; ++k) {
+                    System.arraycopy(EMPTY_BOX, 0, binBoxes, 6 * k, 6);
+                    System.arraycopy(EMPTY_BOX, 0, binCentroids, 6 * k, 6);
+                }
+                for (int i = start; i < end; ++i) {
+                    int k = binOf(i, axis, low, binsPerUnit);
+                    ++binCounts[k];
+                    growBox(binBoxes, 6 * k, boxes, 6 * i);
+                    growByPoint(binCentroids, 6 * k, i);
+                }
+                System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
+                for (int k = BINS - 1; k > 0; --k) {
+                    growBox(sweep, 0, binBoxes, 6 * k);
+                    rightAreas[k] = area(sweep, 0);
+                }
+                System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
+                int leftCount = 0;
+                int best = -1;
+                // split when TRAVERSAL_COST·A + Σ n·A(child) beats the leaf's count·A
+                double bestCost = (end - start - TRAVERSAL_COST) * area(bounds, 6 * node);
+                for (int k = 0; k < BINS - 1; ++k) {
+                    growBox(sweep, 0, binBoxes, 6 * k);
+                    leftCount += binCounts[k];
+                    int rightCount = end - start - leftCount;
+                    if (leftCount == 0 || rightCount == 0)
+                        continue;
+                    double cost = leftCount * area(sweep, 0) + rightCount * rightAreas[k + 1];
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        best = k;
+                    }
+                }
+                return best;
+            }
+
+            /**
+             * Moves the bodies of bins up to and including bin to the front, their boxes and centroids
+             * with them; returns where the rest start.
+             */
+            private int partition(int start, int end, int axis, double low, double binsPerUnit, int bin) {
+                int i = start;
+                int j = end - 1;
+                while (i <= j) {
+                    if (binOf(i, axis, low, binsPerUnit) <= bin)
+                        ++i;
+                    else
+                        swap(i, j--);
+                }
+                return i;
+            }
+
+            /** Swaps the bodies at places i and j, with their boxes and centroids. */
+            private void swap(int i, int j) {
                 int body = order[i];
-                int k = binOf(body, axis, low, binsPerUnit);
-                ++binCounts[k];
-                growBox(binBoxes, 6 * k, boxes, 6 * body);
+                order[i] = order[j];
+                order[j] = body;
+                swapRun(boxes, 6 * i, 6 * j, 6);
+                swapRun(centroids, 3 * i, 3 * j, 3);
             }
-            double[] sweep = EMPTY_BOX.clone();
-            for (int k = BINS - 1; k > 0; --k) {
-                growBox(sweep, 0, binBoxes, 6 * k);
-                rightAreas[k] = area(sweep, 0);
-            }
-            System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
-            int leftCount = 0;
-            int best = -1;
-            // split when TRAVERSAL_COST·A + Σ n·A(child) beats the leaf's count·A
-            double bestCost = (end - start - TRAVERSAL_COST) * area(nodeBounds, 6 * node);
-            for (int k = 0; k < BINS - 1; ++k) {
-                growBox(sweep, 0, binBoxes, 6 * k);
-                leftCount += binCounts[k];
-                int rightCount = end - start - leftCount;
-                if (leftCount == 0 || rightCount == 0)
-                    continue;
-                double cost = leftCount * area(sweep, 0) + rightCount * rightAreas[k + 1];
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    best = k;
+
+            private void swapRun(double[] values, int a, int b, int length) {
+                for (int k = 0; k < length; ++k) {
+                    double value = values[a + k];
+                    values[a + k] = values[b + k];
+                    values[b + k] = value;
                 }
             }
-            return best;
         }
 
-        /** Moves the bodies of bins up to and including bin to the front; returns where the rest start. */
-        private int partition(int start, int end, int axis, double low, double binsPerUnit, int bin) {
-            int i = start;
-            int j = end - 1;
-            while (i <= j) {
-                if (binOf(order[i], axis, low, binsPerUnit) <= bin)
-                    ++i;
-                else {
-                    int swap = order[i];
-                    order[i] = order[j];
-                    order[j--] = swap;
-                }
-            }
-            return i;
-        }
-
-        private void growBox(double[] box, int b, double[] other, int o) {
+        private static void growBox(double[] box, int b, double[] other, int o) {
             if (other[o] > other[o + 3])
                 return; // an empty box
             for (int k = 0; k < 3; ++k) {
@@ -631,7 +955,7 @@ public final class BoundingVolumeHierarchy {
         }
 
         /** Half the surface area of a box (the factor 2 does not change which split is best). */
-        private double area(double[] box, int b) {
+        private static double area(double[] box, int b) {
             double x = box[b + 3] - box[b];
             double y = box[b + 4] - box[b + 1];
             double z = box[b + 5] - box[b + 2];

@@ -59,7 +59,7 @@ public class Cylinder extends Tube {
      * {@link primitives.Util#isZero}), so the radius taken is sqrt(radius² + 1e-10).
      */
     @Override
-    double[] bounds() {
+    boolean bounds(double[] box, int b) {
         Point3D bottom = getAxisRay().getP0();
         Point3D top = getAxisRay().getPoint(height);
         Vector a = getAxisRay().getDir();
@@ -67,13 +67,12 @@ public class Cylinder extends Tube {
         double[] from = { bottom.getX(), bottom.getY(), bottom.getZ() };
         double[] to = { top.getX(), top.getY(), top.getZ() };
         double capRadius = Math.sqrt(getRadius() * getRadius() + CAP_TOLERANCE);
-        double[] box = new double[6];
         for (int i = 0; i < 3; ++i) {
             double reach = capRadius * Math.sqrt(Math.max(0, 1 - axis[i] * axis[i]));
-            box[i] = Math.min(from[i], to[i]) - reach;
-            box[3 + i] = Math.max(from[i], to[i]) + reach;
+            box[b + i] = Math.min(from[i], to[i]) - reach;
+            box[b + 3 + i] = Math.max(from[i], to[i]) + reach;
         }
-        return box;
+        return true;
     }
 
     @Override

@@ -11,6 +11,10 @@ import primitives.Ray;
  */
 public class Geometries extends Intersectable {
     private final List<Intersectable> items = new ArrayList<>();
+    /** The composites among the items, which {@link #version()} walks. */
+    private final List<Geometries> composites = new ArrayList<>();
+    /** How many times objects were added to this composite itself. */
+    private long additions;
 
     /**
      * Creates a composite holding the given objects.
@@ -34,7 +38,25 @@ public class Geometries extends Intersectable {
             if (geometry == null)
                 throw new IllegalArgumentException("a geometry to add is null");
         Collections.addAll(items, geometries);
+        for (Intersectable geometry : geometries)
+            if (geometry instanceof Geometries composite)
+                composites.add(composite);
+        ++additions;
         return this;
+    }
+
+    /**
+     * A number that grows whenever an object is added to this composite or to any composite nested
+     * in it: the sum of their counts of additions (composites are never taken out, so the sum only
+     * grows). A hierarchy built over the composite compares it to know whether it is out of date.
+     *
+     * @return the version of the composite's contents
+     */
+    long version() {
+        long version = additions;
+        for (Geometries composite : composites)
+            version += composite.version();
+        return version;
     }
 
     /** {@return the objects held, as an unmodifiable list} */

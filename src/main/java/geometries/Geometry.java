@@ -185,7 +185,20 @@ public abstract class Geometry extends Intersectable {
      *
      * @return {minX, minY, minZ, maxX, maxY, maxZ}, or null for an unbounded body
      */
-    double[] bounds() {
-        return null;
+    final double[] bounds() {
+        double[] box = new double[6];
+        return bounds(box, 0) ? box : null;
+    }
+
+    /**
+     * Writes the axis-aligned box around the body into an array, the way a hierarchy is built
+     * without an object per body. The default says the body is unbounded.
+     *
+     * @param box the array
+     * @param b   where the box's six numbers go: {minX, minY, minZ, maxX, maxY, maxZ}
+     * @return false for an unbounded body, when nothing is written
+     */
+    boolean bounds(double[] box, int b) {
+        return false;
     }
 }

@@ -222,9 +222,11 @@ public class Polygon extends Geometry {
      * out at sharp vertices.
      */
     @Override
-    double[] bounds() {
-        double[] box = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+    boolean bounds(double[] box, int b) {
+        for (int k = 0; k < 3; ++k) {
+            box[b + k] = Double.POSITIVE_INFINITY;
+            box[b + 3 + k] = Double.NEGATIVE_INFINITY;
+        }
         double delta = EDGE_TOLERANCE * size;
         int n = vertexCoordinates.length / 3;
         for (int i = 0; i < n; ++i) {
@@ -237,11 +239,11 @@ public class Polygon extends Geometry {
             for (int k = 0; k < 3; ++k) {
                 double corner = vertexCoordinates[current + k]
                         - reach * (edgeNormals[previous + k] + edgeNormals[current + k]);
-                box[k] = Math.min(box[k], Math.min(corner, vertexCoordinates[current + k]));
-                box[3 + k] = Math.max(box[3 + k], Math.max(corner, vertexCoordinates[current + k]));
+                box[b + k] = Math.min(box[b + k], Math.min(corner, vertexCoordinates[current + k]));
+                box[b + 3 + k] = Math.max(box[b + 3 + k], Math.max(corner, vertexCoordinates[current + k]));
             }
         }
-        return box;
+        return true;
     }
 
     @Override

@@ -89,8 +89,14 @@ public class Sphere extends Geometry {
     }
 
     @Override
-    double[] bounds() {
-        return new double[] { cx - radius, cy - radius, cz - radius, cx + radius, cy + radius, cz + radius };
+    boolean bounds(double[] box, int b) {
+        box[b] = cx - radius;
+        box[b + 1] = cy - radius;
+        box[b + 2] = cz - radius;
+        box[b + 3] = cx + radius;
+        box[b + 4] = cy + radius;
+        box[b + 5] = cz + radius;
+        return true;
     }
 
     /**

@@ -107,19 +107,18 @@ public class Triangle extends Polygon {
      * tolerance τ, whose corners are p + τ·((p − q) + (p − r)) for each vertex p and the other two q, r.
      */
     @Override
-    double[] bounds() {
-        double[] box = new double[6];
+    boolean bounds(double[] box, int b) {
         for (int k = 0; k < 3; ++k) {
             double a = vertexCoordinates[k];
-            double b = vertexCoordinates[3 + k];
+            double bk = vertexCoordinates[3 + k];
             double c = vertexCoordinates[6 + k];
-            double ca = a + BARYCENTRIC_TOLERANCE * ((a - b) + (a - c));
-            double cb = b + BARYCENTRIC_TOLERANCE * ((b - a) + (b - c));
-            double cc = c + BARYCENTRIC_TOLERANCE * ((c - a) + (c - b));
-            box[k] = Math.min(Math.min(a, Math.min(b, c)), Math.min(ca, Math.min(cb, cc)));
-            box[3 + k] = Math.max(Math.max(a, Math.max(b, c)), Math.max(ca, Math.max(cb, cc)));
+            double ca = a + BARYCENTRIC_TOLERANCE * ((a - bk) + (a - c));
+            double cb = bk + BARYCENTRIC_TOLERANCE * ((bk - a) + (bk - c));
+            double cc = c + BARYCENTRIC_TOLERANCE * ((c - a) + (c - bk));
+            box[b + k] = Math.min(Math.min(a, Math.min(bk, c)), Math.min(ca, Math.min(cb, cc)));
+            box[b + 3 + k] = Math.max(Math.max(a, Math.max(bk, c)), Math.max(ca, Math.max(cb, cc)));
         }
-        return box;
+        return true;
     }
 
     @Override

@@ -55,6 +55,16 @@ public abstract class RayTracerBase {
     }
 
     /**
+     * Gets ready to trace the scene as it is now, on up to a number of threads: {@link Render} calls
+     * this before every render, with its own number of threads. By default {@link #prepare()}.
+     *
+     * @param threads the number of threads the work may be shared among, 1 or more
+     */
+    protected void prepare(int threads) {
+        prepare();
+    }
+
+    /**
      * Sets the number of shadow rays per light for soft shadows: sqrtBeamNum² rays to the light's
      * square, plus one to its centre.
      *

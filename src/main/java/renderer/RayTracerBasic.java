@@ -48,11 +48,23 @@ public class RayTracerBasic extends RayTracerBase {
         return bvh.closestHit(ray, threadState().query(bvh));
     }
 
-    /** Builds the bounding volume hierarchy over the scene's bodies as they are now. */
+    /** Builds the bounding volume hierarchy over the scene's bodies, on the calling thread, unless it is up to date. */
     @Override
     protected void prepare() {
-        accelerator = bruteForce ? BoundingVolumeHierarchy.scan(scene.geometries)
-                : BoundingVolumeHierarchy.build(scene.geometries);
+        prepare(1);
+    }
+
+    /**
+     * Builds the bounding volume hierarchy over the scene's bodies on up to a number of threads,
+     * unless it was built over them as they are now: the scene's composite is the same object and
+     * no body was added to it (or to a composite in it) since.
+     */
+    @Override
+    protected synchronized void prepare(int threads) {
+        BoundingVolumeHierarchy bvh = accelerator;
+        if (bvh == null || !bvh.isBuiltFrom(scene.geometries))
+            accelerator = bruteForce ? BoundingVolumeHierarchy.scan(scene.geometries)
+                    : BoundingVolumeHierarchy.build(scene.geometries, threads);
     }
 
     /**
@@ -61,20 +73,18 @@ public class RayTracerBasic extends RayTracerBase {
      *
      * @param bruteForce true for a linear scan of the bodies
      */
-    void setBruteForce(boolean bruteForce) {
+    synchronized void setBruteForce(boolean bruteForce) {
         this.bruteForce = bruteForce;
+        accelerator = null;
         prepare();
     }
 
-    /** The hierarchy, built on first use when no render has prepared it. */
-    private BoundingVolumeHierarchy accelerator() {
+    /** {@return the hierarchy, built on first use when no render has prepared it} */
+    BoundingVolumeHierarchy accelerator() {
         BoundingVolumeHierarchy bvh = accelerator;
         if (bvh == null) {
-            synchronized (this) {
-                if (accelerator == null)
-                    prepare();
-                bvh = accelerator;
-            }
+            prepare();
+            bvh = accelerator;
         }
         return bvh;
     }

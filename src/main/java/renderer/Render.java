@@ -193,7 +193,7 @@ public class Render {
         requireImageWriter();
         if (camera == null)
             throw new MissingResourceException("Render: the camera is not set", Render.class.getName(), "camera");
-        requireRayTracer().prepare();
+        requireRayTracer().prepare(threadsCount);
         new TileRenderer().run();
     }
 

@@ -1,9 +1,11 @@
 package benchmark;
 
+import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 
+import geometries.BoundingVolumeHierarchy;
 import geometries.Geometries;
 import geometries.Plane;
 import geometries.Sphere;
@@ -20,25 +22,53 @@ import renderer.Render;
 import scene.Scene;
 
 /**
- * The project's speed benchmark (SPEC §7). It renders the reference scenes S (three spheres on a
- * floor, one square light, soft shadows with 9 × 9 + 1 shadow rays) and M (the same with every sphere
- * tessellated into a triangle mesh) and prints, per scene, the primary and shadow rays of a frame
- * (and the share of the shadow rays whose bundle was open: nothing could block them, so no body was
- * tested), the median seconds of the timed frames, and million shadow rays per second.
+ * The project's speed benchmark (SPEC §8). It renders the reference scenes: S (three spheres on a
+ * floor, one square light of edge 20, soft shadows with 9 × 9 + 1 shadow rays, 800 × 800) and M (the
+ * same with every sphere tessellated into a triangle mesh); at mesh scale G10k, G100k and G1M (a
+ * bumpy {@link Terrain} of about 10k, 100k and 1M triangles, 400 × 400, a light of edge 60) and F2
+ * (a forest of 20 × 60 small spheres, 400 × 400, the same light). Per scene it prints:
+ * <ul>
+ * <li>the bodies in the hierarchy, the seconds of building it (the median of {@value #BUILDS}
+ * builds on the render's threads, outside any render), and the bytes per body of the scene and its
+ * hierarchy: the heap in use after a full collection ({@link System#gc()}, read from the
+ * {@link java.lang.management.MemoryMXBean}) once the scene and a hierarchy are built, less the heap
+ * in use before, divided by the bodies (for the meshes, bytes per triangle);</li>
+ * <li>the primary and shadow rays of a frame (and the share of the shadow rays whose bundle was
+ * open: nothing could block them, so no body was tested), the seconds of the first frame (which
+ * builds the render's hierarchy), the median seconds of the timed frames (warm: the hierarchy is
+ * built once, not per frame), and million shadow rays per second.</li>
+ * </ul>
  * <p>
- * Options: {@code --scene S|M|all} (default all), {@code --frames N} timed frames (default 5),
- * {@code --warmup N} untimed frames first (default 2), {@code --threads N} (default 0, all cores).
- * The last frame of each scene is written to {@code target/benchmark/<scene>.png}.
+ * Options: {@code --scene} a scene, several separated by commas, or {@code all} (the default: S and
+ * M), {@code --frames N} timed frames (default 5), {@code --warmup N} untimed frames first (default
+ * 2), {@code --threads N} (default 0, all cores). The last frame of each scene is written to
+ * {@code target/benchmark/<scene>.png}.
  */
 public final class Benchmark {
-    /** The width and height of the pictures, in pixels. */
+    /** The scenes, by name. */
+    private static final List<String> SCENES = List.of("S", "M", "G10k", "G100k", "G1M", "F2");
+    /** The width and height of the pictures of S and M, in pixels. */
     private static final int SIZE = 800;
+    /** The width and height of the pictures of the terrains and the forest, in pixels. */
+    private static final int SMALL_SIZE = 400;
     /** The bands from pole to pole of a sphere's mesh in scene M. */
     private static final int MESH_RINGS = 129;
     /** The slices around the axis of a sphere's mesh in scene M. */
     private static final int MESH_SEGMENTS = 128;
+    /** The edge of the light's square in S and M, and in the terrains and the forest. */
+    private static final double LIGHT_EDGE = 20;
+    private static final double LARGE_LIGHT_EDGE = 60;
+    /** The forest's trees along x and along z, their radius and the distance between them. */
+    private static final int FOREST_COLUMNS = 20;
+    private static final int FOREST_ROWS = 60;
+    private static final double TREE_RADIUS = 3;
+    private static final double TREE_SPACING = 10;
+    /** The builds of the hierarchy timed per scene. */
+    private static final int BUILDS = 3;
     /** Where the pictures go. */
     private static final Path OUTPUT = Path.of("target", "benchmark");
+    /** The material of every body. */
+    private static final Material DIFFUSE = new Material().setKd(0.8);
 
     /** Not instantiable. */
     private Benchmark() {
@@ -66,35 +96,70 @@ public final class Benchmark {
                 default -> usage("unknown option " + args[a]);
             }
         }
-        List<String> scenes = switch (sceneOption) {
-            case "S", "M" -> List.of(sceneOption);
-            case "all" -> List.of("S", "M");
-            default -> usage("--scene must be S, M or all, got " + sceneOption);
-        };
+        List<String> scenes = sceneOption.equals("all") ? List.of("S", "M") : List.of(sceneOption.split(","));
+        for (String name : scenes)
+            if (!SCENES.contains(name))
+                usage("--scene must be all or among " + String.join(", ", SCENES) + ", got " + name);
         int threadsUsed = threads == 0 ? Runtime.getRuntime().availableProcessors() : threads;
         System.out.printf("JVM %s (%s), %d available processors, %d threads, %d warm-up + %d timed frames%n",
                 Runtime.version(), System.getProperty("java.vm.name"), Runtime.getRuntime().availableProcessors(),
                 threadsUsed, warmup, frames);
         for (String name : scenes)
-            run(name, frames, warmup, threads);
+            run(name, frames, warmup, threadsUsed);
     }
 
     /**
-     * Renders one scene: the warm-up frames, then the timed ones, and prints its line.
+     * Builds one scene and its hierarchy and prints their line, then renders it: the warm-up frames,
+     * then the timed ones, and prints its line.
      *
-     * @param name    "S" or "M"
+     * @param name    the scene's name
      * @param frames  the number of timed frames
      * @param warmup  the number of untimed frames first
-     * @param threads the number of threads, 0 for all cores
+     * @param threads the number of threads
      */
     private static void run(String name, int frames, int warmup, int threads) {
-        RayTracerBasic rayTracer = new RayTracerBasic(buildScene(name.equals("M")));
+        long heapBefore = heapUsed();
+        Scene scene = buildScene(name);
+        double[] builds = new double[BUILDS];
+        BoundingVolumeHierarchy bvh = null;
+        for (int b = 0; b < BUILDS; ++b) {
+            bvh = null; // the last hierarchy is collected while the next one is built
+            long start = System.nanoTime();
+            bvh = BoundingVolumeHierarchy.build(scene.geometries, threads);
+            builds[b] = (System.nanoTime() - start) / 1e9;
+        }
+        long heapAfter = heapUsed();
+        int bodies = bvh.getBoundedCount();
+        System.out.printf("%s: %d bodies in the hierarchy (%d nodes), build median %.3f s (builds %s s),"
+                        + " %.0f bytes per body (scene + hierarchy)%n", name, bodies, bvh.getNodesCount(),
+                median(builds), format(builds), (double) (heapAfter - heapBefore) / bodies);
+        bvh = null; // the render builds its own
+        render(name, scene, frames, warmup, threads);
+    }
+
+    /**
+     * Renders a scene: the warm-up frames, then the timed ones, and prints its line.
+     *
+     * @param name    the scene's name
+     * @param scene   the scene
+     * @param frames  the number of timed frames
+     * @param warmup  the number of untimed frames first
+     * @param threads the number of threads
+     */
+    private static void render(String name, Scene scene, int frames, int warmup, int threads) {
+        RayTracerBasic rayTracer = new RayTracerBasic(scene);
         Camera camera = new Camera(new Point3D(0, 0, 1000), new Vector(0, 0, -1), new Vector(0, 1, 0))
                 .setVpSize(150, 150).setVpDistance(1000);
-        Render render = new Render().setImageWriter(new ImageWriter(name, SIZE, SIZE, OUTPUT)).setCamera(camera)
+        int size = sizeOf(name);
+        Render render = new Render().setImageWriter(new ImageWriter(name, size, size, OUTPUT)).setCamera(camera)
                 .setRayTracer(rayTracer).setSoftShadows(true).setSqrtBeamNum(9).setMultithreading(threads);
-        for (int f = 0; f < warmup; ++f)
+        double first = 0;
+        for (int f = 0; f < warmup; ++f) {
+            long start = System.nanoTime();
             render.renderImage();
+            if (f == 0)
+                first = (System.nanoTime() - start) / 1e9;
+        }
         double[] seconds = new double[frames];
         long primary = 0;
         long shadow = 0;
@@ -113,9 +178,84 @@ public final class Benchmark {
         render.writeToImage();
         double median = median(seconds);
         System.out.printf("%s: %d pixels, %d primary rays/frame, %d shadow rays/frame (%.1f %% in open bundles),"
-                        + " median %.3f s/frame (frames %s s), %.2f M shadow rays/s%n",
-                name, SIZE * SIZE, primary, shadow, 100.0 * open / shadow, median, format(seconds),
+                        + " first frame %.3f s (with the build), median %.3f s/frame (frames %s s),"
+                        + " %.2f M shadow rays/s%n",
+                name, size * size, primary, shadow, 100.0 * open / shadow, first, median, format(seconds),
                 shadow / median / 1e6);
+    }
+
+    /** {@return the heap in use after a full collection, in bytes} */
+    private static long heapUsed() {
+        for (int i = 0; i < 3; ++i)
+            System.gc();
+        return ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
+    }
+
+    /**
+     * The width and height of a scene's picture.
+     *
+     * @param name the scene's name
+     * @return its size in pixels
+     */
+    private static int sizeOf(String name) {
+        return name.equals("S") || name.equals("M") ? SIZE : SMALL_SIZE;
+    }
+
+    /**
+     * Builds a scene by its name.
+     *
+     * @param name one of {@link #SCENES}
+     * @return the scene
+     */
+    static Scene buildScene(String name) {
+        return switch (name) {
+            case "S", "M" -> buildScene(name.equals("M"));
+            case "F2" -> forest();
+            default -> terrain(name, Integer.parseInt(name.substring(1).replace("k", "000").replace("M", "000000")));
+        };
+    }
+
+    /**
+     * The floor and the light every scene has.
+     *
+     * @param name      the scene's name
+     * @param lightEdge the edge of the light's square
+     * @return the scene with them
+     */
+    private static Scene floorAndLight(String name, double lightEdge) {
+        Scene scene = new Scene(name);
+        scene.geometries.add(new Plane(new Point3D(0, -50, 0), new Vector(0, 1, 0)).setMaterial(DIFFUSE));
+        scene.lights.add(new PointLight(new Color(255, 255, 255), new Point3D(0, 100, 0))
+                .setEdgesSize(lightEdge).setUV(new Vector(1, 0, 0), new Vector(0, 0, 1)));
+        return scene;
+    }
+
+    /**
+     * Builds scene G&lt;n&gt;: the terrain of about n triangles over the floor.
+     *
+     * @param name      the scene's name
+     * @param triangles about how many triangles
+     * @return the scene
+     */
+    private static Scene terrain(String name, int triangles) {
+        Scene scene = floorAndLight(name, LARGE_LIGHT_EDGE);
+        Geometries mesh = new Geometries();
+        for (Triangle triangle : Terrain.triangles(triangles))
+            mesh.add(triangle.setMaterial(DIFFUSE));
+        scene.geometries.add(mesh);
+        System.out.printf("%s: a terrain of %d x %d cells, %d triangles%n", name, Terrain.cellsAlongX(triangles),
+                Terrain.cellsAlongZ(triangles), mesh.getGeometries().size());
+        return scene;
+    }
+
+    /** {@return scene F2: 20 × 60 spheres of radius 3, 10 apart, on the floor} */
+    private static Scene forest() {
+        Scene scene = floorAndLight("F2", LARGE_LIGHT_EDGE);
+        for (int i = 0; i < FOREST_COLUMNS; ++i)
+            for (int k = 0; k < FOREST_ROWS; ++k)
+                scene.geometries.add(new Sphere(new Point3D(-95 + TREE_SPACING * i, -37, 330 - TREE_SPACING * k),
+                        TREE_RADIUS).setMaterial(DIFFUSE));
+        return scene;
     }
 
     /**
@@ -125,9 +265,7 @@ public final class Benchmark {
      * @return the scene
      */
     static Scene buildScene(boolean meshes) {
-        Scene scene = new Scene(meshes ? "M" : "S");
-        Material diffuse = new Material().setKd(0.8);
-        scene.geometries.add(new Plane(new Point3D(0, -50, 0), new Vector(0, 1, 0)).setMaterial(diffuse));
+        Scene scene = floorAndLight(meshes ? "M" : "S", LIGHT_EDGE);
         Point3D[] centers = { new Point3D(-40, -20, 0), new Point3D(30, -30, 20), new Point3D(5, -35, -50) };
         double[] radii = { 30, 20, 15 };
         int triangles = 0;
@@ -135,19 +273,17 @@ public final class Benchmark {
             if (meshes) {
                 Geometries mesh = new Geometries();
                 for (Triangle triangle : SphereMesh.triangles(centers[s], radii[s], MESH_RINGS, MESH_SEGMENTS)) {
-                    mesh.add(triangle.setMaterial(diffuse));
+                    mesh.add(triangle.setMaterial(DIFFUSE));
                     ++triangles;
                 }
                 scene.geometries.add(mesh);
             } else
-                scene.geometries.add(new Sphere(centers[s], radii[s]).setMaterial(diffuse));
+                scene.geometries.add(new Sphere(centers[s], radii[s]).setMaterial(DIFFUSE));
         }
         if (meshes)
             System.out.printf("M: %d spheres of %d rings x %d segments = %d triangles each, %d in all%n",
                     centers.length, MESH_RINGS, MESH_SEGMENTS,
                     SphereMesh.trianglesCount(MESH_RINGS, MESH_SEGMENTS), triangles);
-        scene.lights.add(new PointLight(new Color(255, 255, 255), new Point3D(0, 100, 0))
-                .setEdgesSize(20).setUV(new Vector(1, 0, 0), new Vector(0, 0, 1)));
         return scene;
     }
 
@@ -204,7 +340,8 @@ public final class Benchmark {
      */
     private static <T> T usage(String problem) {
         System.err.println("benchmark: " + problem);
-        System.err.println("usage: Benchmark [--scene S|M|all] [--frames N] [--warmup N] [--threads N]");
+        System.err.println("usage: Benchmark [--scene S|M|G10k|G100k|G1M|F2|all, or several separated by commas]"
+                + " [--frames N] [--warmup N] [--threads N]");
         System.exit(2);
         throw new IllegalStateException(problem);
     }

@@ -752,7 +752,113 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
-     * Test method for {@link BoundingVolumeHierarchy#build(Intersectable)} and
+     * Test method for {@link BoundingVolumeHierarchy#build(Intersectable, int)}: a build shared out
+     * among threads answers every query as the one built on one thread and as the brute force.
+     */
+    @Test
+    void testParallelBuildRandomScenes() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 20 seeded scenes (1..2000 bodies, some transparent), built on 2, 3 and 8 threads: the
+        // same shape (nodes, depth, bodies) as on one thread, the same closest hit (the same body at
+        // the same point) and the same transmittance of each ray, and the brute force's answers
+        Random rnd = new Random(16);
+        double[] kts = { 0, 0, 0.5, 0.9 };
+        int hits = 0;
+        for (int s = 0; s < 20; ++s) {
+            TestScene scene = randomScene(rnd, s);
+            for (Intersectable body : scene.bodies())
+                setKt(body, kts, rnd);
+            BoundingVolumeHierarchy single = BoundingVolumeHierarchy.build(scene.geometries());
+            for (int threads : new int[] { 2, 3, 8 }) {
+                BoundingVolumeHierarchy parallel = BoundingVolumeHierarchy.build(scene.geometries(), threads);
+                String tc = "TC01: scene " + s + ", " + threads + " threads";
+                assertEquals(single.getNodesCount(), parallel.getNodesCount(), tc + ": wrong nodes count");
+                assertEquals(single.getDepth(), parallel.getDepth(), tc + ": wrong depth");
+                assertEquals(single.getBoundedCount(), parallel.getBoundedCount(), tc + ": wrong bounded count");
+                for (int r = 0; r < 100; ++r) {
+                    Ray ray = randomRay(rnd, scene);
+                    GeoPoint expected = single.closestHit(ray, single.newQuery());
+                    GeoPoint actual = parallel.closestHit(ray, parallel.newQuery());
+                    assertSameHit(reference(scene.geometries(), ray), actual, ray, tc + " ray " + r + " (brute force)");
+                    if (expected != null) {
+                        ++hits;
+                        assertSame(expected.geometry, actual.geometry, tc + " ray " + r + ": another body hit");
+                        assertPoint(expected.point, actual.point, tc + " ray " + r);
+                    }
+                    double d = 60 * rnd.nextDouble();
+                    assertEquals(transmittance(single, ray, d, 0, single.newQuery()),
+                            transmittance(parallel, ray, d, 0, parallel.newQuery()), 1e-12,
+                            tc + " ray " + r + ": wrong transmittance");
+                }
+            }
+        }
+        assertTrue(hits > 3 * 20 * 100 / 2, "TC01: too few rays hit anything (" + hits + ")");
+
+        // ===== Boundary Values Tests =====
+        // TC11: more threads than bodies (1, 2 and 5 bodies on 8 threads): the same tree as on one thread
+        Ray down = new Ray(new Point3D(0, 0, 100), new Vector(0, 0, -1));
+        for (int n : new int[] { 1, 2, 5 }) {
+            Geometries few = new Geometries();
+            for (int i = 0; i < n; ++i)
+                few.add(new Sphere(new Point3D(100 * i, 0, 0), 1));
+            BoundingVolumeHierarchy parallel = BoundingVolumeHierarchy.build(few, 8);
+            assertEquals(BoundingVolumeHierarchy.build(few).getNodesCount(), parallel.getNodesCount(),
+                    "TC11: " + n + " bodies: wrong nodes count");
+            assertPoint(new Point3D(0, 0, 1), parallel.closestHit(down, parallel.newQuery()).point,
+                    "TC11: " + n + " bodies: the first sphere must be hit");
+        }
+        // TC12: an empty composite on 2 threads: no nodes, no hit
+        BoundingVolumeHierarchy empty = BoundingVolumeHierarchy.build(new Geometries(), 2);
+        assertEquals(0, empty.getNodesCount(), "TC12: an empty composite has no nodes");
+        assertNull(empty.closestHit(down, empty.newQuery()), "TC12: an empty composite is never hit");
+    }
+
+    /** Test method for {@link BoundingVolumeHierarchy#isBuiltFrom(Intersectable)}. */
+    @Test
+    void testIsBuiltFrom() {
+        Geometries inner = new Geometries(new Sphere(new Point3D(5, 0, 0), 1));
+        Geometries scene = new Geometries(new Sphere(new Point3D(0, 0, 0), 1), inner);
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene, 2);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the same composite, unchanged: up to date (true)
+        assertTrue(bvh.isBuiltFrom(scene), "TC01: an unchanged composite must be up to date");
+        // TC02: another composite with the same bodies: out of date (false)
+        assertFalse(bvh.isBuiltFrom(new Geometries(scene.getGeometries().toArray(new Intersectable[0]))),
+                "TC02: another composite must be out of date");
+        // TC03: a body added to a nested composite: out of date (false), and a new build is up to date
+        inner.add(new Sphere(new Point3D(10, 0, 0), 1));
+        assertFalse(bvh.isBuiltFrom(scene), "TC03: a body added to a nested composite must be seen");
+        bvh = BoundingVolumeHierarchy.build(scene);
+        assertTrue(bvh.isBuiltFrom(scene), "TC03: a new build must be up to date");
+        // TC04: a body added to the composite itself: out of date (false)
+        scene.add(new Triangle(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)));
+        assertFalse(bvh.isBuiltFrom(scene), "TC04: a body added to the composite must be seen");
+        // TC05: the brute-force scan knows the same (true, then false after an addition)
+        BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(scene);
+        assertTrue(scan.isBuiltFrom(scene), "TC05: an unchanged composite must be up to date for the scan");
+        inner.add(new Plane(new Point3D(0, 0, -1), new Vector(0, 0, 1)));
+        assertFalse(scan.isBuiltFrom(scene), "TC05: a body added must be seen by the scan");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a composite nested after the build, then a body added to it: out of date both times (false)
+        Geometries late = new Geometries();
+        bvh = BoundingVolumeHierarchy.build(scene);
+        scene.add(late);
+        assertFalse(bvh.isBuiltFrom(scene), "TC11: a composite nested after the build must be seen");
+        bvh = BoundingVolumeHierarchy.build(scene);
+        late.add(new Sphere(new Point3D(0, 5, 0), 1));
+        assertFalse(bvh.isBuiltFrom(scene), "TC11: a body added to a late nested composite must be seen");
+        // TC12: a single body, not a composite: up to date for itself (true), not for another body (false)
+        Sphere lone = new Sphere(new Point3D(0, 0, 0), 1);
+        BoundingVolumeHierarchy single = BoundingVolumeHierarchy.build(lone);
+        assertTrue(single.isBuiltFrom(lone), "TC12: a single body must be up to date");
+        assertFalse(single.isBuiltFrom(new Sphere(new Point3D(0, 0, 0), 1)), "TC12: another body must be out of date");
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#build(Intersectable)},
+     * {@link BoundingVolumeHierarchy#build(Intersectable, int)} and
      * {@link BoundingVolumeHierarchy#scan(Intersectable)} with bad input.
      */
     @Test
@@ -763,6 +869,10 @@ class BoundingVolumeHierarchyTest {
                 "TC11: build(null) must throw"), "geometries", "TC11");
         assertMessage(assertThrows(IllegalArgumentException.class, () -> BoundingVolumeHierarchy.scan(null),
                 "TC11: scan(null) must throw"), "geometries", "TC11");
+        // TC12: no thread to build on (0 threads)
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> BoundingVolumeHierarchy.build(new Geometries(), 0), "TC12: 0 threads must throw"),
+                "threads", "TC12");
     }
 
     /**
@@ -1262,11 +1372,13 @@ class BoundingVolumeHierarchyTest {
      * @param rnd     the generator
      * @param scene   the scene
      * @param opaque  whether every body is opaque (the answers are then exactly 0 or 1)
+     * @param threads the number of threads the hierarchy is built on
      * @param counts  the counters to add to
      * @param tc      the test-case label
      */
-    private static void checkBundles(Random rnd, TestScene scene, boolean opaque, GatherCounts counts, String tc) {
-        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries());
+    private static void checkBundles(Random rnd, TestScene scene, boolean opaque, int threads, GatherCounts counts,
+                                     String tc) {
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries(), threads);
         Query query = bvh.newQuery();
         Query treeQuery = bvh.newQuery();
         ShadowFrustum frustum = query.getFrustum();
@@ -1374,19 +1486,20 @@ class BoundingVolumeHierarchyTest {
         Random rnd = new Random(7031);
         GatherCounts opaque = new GatherCounts();
         for (int s : new int[] { 0, 2, 3, 5, 6, 7, 8, 9, 13, 15, 17, 19 })
-            checkBundles(rnd, randomScene(rnd, s), true, opaque, "TC01: scene " + s);
+            checkBundles(rnd, randomScene(rnd, s), true, 1, opaque, "TC01: scene " + s);
         for (int m = 0; m < 2; ++m)
-            checkBundles(rnd, meshScene(rnd), true, opaque, "TC01: mesh scene " + m);
+            checkBundles(rnd, meshScene(rnd), true, 1, opaque, "TC01: mesh scene " + m);
         assertCounts(opaque, "TC01");
 
-        // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque): equal within 1e-12
+        // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque), the hierarchy built on 3
+        // threads: equal within 1e-12
         double[] kts = { 0.5, 0.9, 0.25, 1, 0.75, 0.999, 0.5, 0.9, 0 };
         GatherCounts transparent = new GatherCounts();
         for (int s : new int[] { 0, 2, 4, 5, 6, 8, 9, 13, 15, 18, 19, -1, -1 }) {
             TestScene scene = s < 0 ? meshScene(rnd) : randomScene(rnd, s);
             for (Intersectable body : scene.bodies())
                 setKt(body, kts, rnd);
-            checkBundles(rnd, scene, false, transparent, "TC02: " + (s < 0 ? "mesh scene" : "scene " + s));
+            checkBundles(rnd, scene, false, 3, transparent, "TC02: " + (s < 0 ? "mesh scene" : "scene " + s));
         }
         assertCounts(transparent, "TC02");
     }

@@ -174,4 +174,32 @@ class GeometriesTest {
         assertSame(g, g.add(), "TC14: add must return the composite itself");
         assertEquals(3, g.getGeometries().size(), "TC14: adding nothing must not change the composite");
     }
+
+    /** Test method for {@link geometries.Geometries#version()}. */
+    @Test
+    void testVersion() {
+        Geometries inner = new Geometries(sphere);
+        Geometries outer = new Geometries(inner);
+        long start = outer.version();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: reading it changes nothing (the same number twice)
+        assertEquals(start, outer.version(), "TC01: an unchanged composite must keep its version");
+        // TC02: a body added to the composite itself: a larger number
+        outer.add(plane);
+        long afterOuter = outer.version();
+        assertTrue(afterOuter > start, "TC02: adding to the composite must raise its version");
+        // TC03: a body added to a nested composite: a larger number for the outer one too
+        inner.add(triangle);
+        assertTrue(outer.version() > afterOuter, "TC03: adding to a nested composite must raise the version");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a composite nested twice, then added to: counted in both places, still larger
+        long before = outer.version();
+        outer.add(inner);
+        long twice = outer.version();
+        assertTrue(twice > before, "TC11: nesting a composite must raise the version");
+        inner.add(sphere);
+        assertTrue(outer.version() > twice, "TC11: adding to a composite nested twice must raise the version");
+    }
 }

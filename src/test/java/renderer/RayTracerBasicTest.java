@@ -2,6 +2,8 @@ package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertColor;
@@ -13,6 +15,8 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
+import geometries.BoundingVolumeHierarchy;
+import geometries.Geometries;
 import geometries.Intersectable.GeoPoint;
 import geometries.Plane;
 import geometries.Polygon;
@@ -62,6 +66,54 @@ class RayTracerBasicTest {
         // TC02: a ray hitting the floor sees emission + ambient = (1+50, 2+25, 3+10)
         assertColor(new Color(51, 27, 13), tracer.traceRay(RAY_DOWN),
                 "TC02: with no lights the colour is emission plus ambient");
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#prepare(int)}: the hierarchy is built again only when the
+     * scene's bodies changed.
+     */
+    @Test
+    void testPrepare() {
+        Scene scene = new Scene("prepare");
+        Geometries nested = new Geometries(floor(new Material(), new Color(1, 2, 3)));
+        scene.geometries.add(nested);
+        RayTracerBasic tracer = new RayTracerBasic(scene);
+        Color red = new Color(200, 0, 0);
+        // a red sphere on the floor under RAY_DOWN
+        Sphere sphere = new Sphere(new Point3D(0, 0, 10), 5);
+        sphere.setEmission(red);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: prepared twice (on 2 threads, then 1) with nothing changed: the same hierarchy
+        tracer.prepare(2);
+        BoundingVolumeHierarchy first = tracer.accelerator();
+        tracer.prepare(1);
+        assertSame(first, tracer.accelerator(), "TC01: an unchanged scene must not be built again");
+        // TC02: a body added to a nested composite: built again, the ray sees it (red)
+        nested.add(sphere);
+        tracer.prepare(2);
+        assertNotSame(first, tracer.accelerator(), "TC02: a body added to a nested composite must be seen");
+        assertColor(red, tracer.traceRay(RAY_DOWN), "TC02: the added sphere must be seen");
+        // TC03: the scene's composite replaced through the field: built again, the ray sees the floor (1, 2, 3)
+        BoundingVolumeHierarchy second = tracer.accelerator();
+        scene.geometries = new Geometries(floor(new Material(), new Color(1, 2, 3)));
+        tracer.prepare(2);
+        assertNotSame(second, tracer.accelerator(), "TC03: a replaced composite must be seen");
+        assertColor(new Color(1, 2, 3), tracer.traceRay(RAY_DOWN), "TC03: the new composite has no sphere");
+        // TC04: the scene's composite set back with setGeometries: built again, the sphere is seen (red)
+        BoundingVolumeHierarchy third = tracer.accelerator();
+        scene.setGeometries(new Geometries(nested));
+        tracer.prepare(2);
+        assertNotSame(third, tracer.accelerator(), "TC04: a composite set by setGeometries must be seen");
+        assertColor(red, tracer.traceRay(RAY_DOWN), "TC04: the sphere must be seen again");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a ray traced before any preparation builds the hierarchy; preparing then keeps it
+        RayTracerBasic lazy = new RayTracerBasic(scene);
+        assertColor(red, lazy.traceRay(RAY_DOWN), "TC11: the sphere must be seen without preparation");
+        BoundingVolumeHierarchy built = lazy.accelerator();
+        lazy.prepare(2);
+        assertSame(built, lazy.accelerator(), "TC11: the hierarchy built on first use is up to date");
     }
 
     /** Test method for {@link RayTracerBasic#traceRay(Ray)}: the Phong diffuse and specular terms. */

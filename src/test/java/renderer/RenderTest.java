@@ -3,6 +3,7 @@ package renderer;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -15,6 +16,8 @@ import java.util.MissingResourceException;
 
 import org.junit.jupiter.api.Test;
 
+import geometries.BoundingVolumeHierarchy;
+import geometries.Geometries;
 import geometries.Sphere;
 import geometries.Triangle;
 import lighting.AmbientLight;
@@ -230,6 +233,32 @@ class RenderTest {
                 assertNotEquals(new java.awt.Color(20, 40, 60), pixel(render, x, SIZE - 1 - k),
                         "TC11: the seam between the triangles shows the background at (" + x + ", " + (SIZE - 1 - k) + ")");
             }
+    }
+
+    /**
+     * Test method for {@link Render#renderImage()}: the hierarchy over the bodies is built once, and
+     * again only when the scene's bodies change.
+     */
+    @Test
+    void testRenderBuildsOnce() {
+        Scene scene = floorScene("build once").setAmbientLight(new AmbientLight(new Color(100, 100, 100), 1));
+        Geometries extra = new Geometries();
+        scene.geometries.add(extra);
+        RayTracerBasic tracer = new RayTracerBasic(scene);
+        Render render = render("buildOnce1", SIZE, tracer, 1, 2);
+        BoundingVolumeHierarchy first = tracer.accelerator();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a second render of the unchanged scene keeps the hierarchy (the same object)
+        render.renderImage();
+        assertSame(first, tracer.accelerator(), "TC01: an unchanged scene must not be built again");
+        // TC02: a sphere added to a nested composite: built again, and the sphere is seen in the
+        // centre (its emission (255, 0, 0) plus the ambient light (100, 100, 100) saturates red)
+        extra.add(new Sphere(new Point3D(0, 0, 50), 20).setEmission(new Color(255, 0, 0)));
+        render.renderImage();
+        assertNotSame(first, tracer.accelerator(), "TC02: a body added to a nested composite must be seen");
+        assertEquals(new java.awt.Color(255, 100, 100), pixel(render, SIZE / 2, SIZE / 2),
+                "TC02: the added sphere must be seen in the centre");
     }
 
     /** Test method for {@link Render#setMultithreading(int)}: the picture does not depend on the thread count. */

@@ -1,0 +1,98 @@
+package benchmark;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import geometries.Triangle;
+import primitives.Point3D;
+
+/**
+ * The benchmark's bumpy terrain (SPEC §8, scenes G&lt;n&gt;): the heightfield
+ * {@code y = −45.5 + 2.5·sin(0.3x)·cos(0.25z) + 1.5·sin(0.11x + 0.7)·sin(0.13z)} over
+ * x ∈ [−200, 200], z ∈ [−1500, 340], cut into a grid of cells about as long as they are wide, each
+ * cell split into two triangles along its diagonal. Neighbouring triangles share their vertex objects.
+ */
+public final class Terrain {
+    /** The terrain's extent along x. */
+    static final double MIN_X = -200;
+    static final double MAX_X = 200;
+    /** The terrain's extent along z. */
+    static final double MIN_Z = -1500;
+    static final double MAX_Z = 340;
+
+    /** Not instantiable. */
+    private Terrain() {
+    }
+
+    /**
+     * The height of the terrain.
+     *
+     * @param x the x coordinate
+     * @param z the z coordinate
+     * @return y at (x, z)
+     */
+    public static double height(double x, double z) {
+        return -45.5 + 2.5 * Math.sin(0.3 * x) * Math.cos(0.25 * z) + 1.5 * Math.sin(0.11 * x + 0.7) * Math.sin(0.13 * z);
+    }
+
+    /**
+     * The cells of the grid along z for about a number of triangles: cells about square.
+     *
+     * @param triangles the number of triangles wanted, 2 or more
+     * @return the number of cells along z
+     */
+    public static int cellsAlongZ(int triangles) {
+        requireTriangles(triangles);
+        return Math.max(1, (int) Math.round(Math.sqrt(triangles / 2.0 * (MAX_Z - MIN_Z) / (MAX_X - MIN_X))));
+    }
+
+    /**
+     * The cells of the grid along x for about a number of triangles.
+     *
+     * @param triangles the number of triangles wanted, 2 or more
+     * @return the number of cells along x
+     */
+    public static int cellsAlongX(int triangles) {
+        return Math.max(1, (int) Math.round(triangles / 2.0 / cellsAlongZ(triangles)));
+    }
+
+    /**
+     * Tessellates the terrain into about a number of triangles:
+     * 2 · {@link #cellsAlongX} · {@link #cellsAlongZ} of them.
+     *
+     * @param triangles the number of triangles wanted, 2 or more
+     * @return the triangles, row by row along z
+     * @throws IllegalArgumentException when fewer than 2 triangles are wanted
+     */
+    public static List<Triangle> triangles(int triangles) {
+        int nx = cellsAlongX(triangles);
+        int nz = cellsAlongZ(triangles);
+        Point3D[] previous = row(nx, nz, 0);
+        List<Triangle> result = new ArrayList<>(2 * nx * nz);
+        for (int k = 1; k <= nz; ++k) {
+            Point3D[] current = row(nx, nz, k);
+            for (int i = 0; i < nx; ++i) {
+                result.add(new Triangle(previous[i], previous[i + 1], current[i + 1]));
+                result.add(new Triangle(previous[i], current[i + 1], current[i]));
+            }
+            previous = current;
+        }
+        return result;
+    }
+
+    /** The nx + 1 vertices of row k of the grid (z = MIN_Z + k · cell length). */
+    private static Point3D[] row(int nx, int nz, int k) {
+        double z = MIN_Z + (MAX_Z - MIN_Z) * k / nz;
+        Point3D[] row = new Point3D[nx + 1];
+        for (int i = 0; i <= nx; ++i) {
+            double x = MIN_X + (MAX_X - MIN_X) * i / nx;
+            row[i] = new Point3D(x, height(x, z), z);
+        }
+        return row;
+    }
+
+    private static void requireTriangles(int triangles) {
+        if (triangles < 2)
+            throw new IllegalArgumentException("a terrain needs 2 triangles or more, got " + triangles);
+    }
+}
