@@ -153,13 +153,9 @@ public final class Benchmark {
         int size = sizeOf(name);
         Render render = new Render().setImageWriter(new ImageWriter(name, size, size, OUTPUT)).setCamera(camera)
                 .setRayTracer(rayTracer).setSoftShadows(true).setSqrtBeamNum(9).setMultithreading(threads);
-        double first = 0;
-        for (int f = 0; f < warmup; ++f) {
-            long start = System.nanoTime();
-            render.renderImage();
-            if (f == 0)
-                first = (System.nanoTime() - start) / 1e9;
-        }
+        double[] warm = new double[warmup];
+        for (int f = 0; f < warmup; ++f)
+            warm[f] = timedRender(render);
         double[] seconds = new double[frames];
         long primary = 0;
         long shadow = 0;
@@ -168,20 +164,31 @@ public final class Benchmark {
             long primaryBefore = rayTracer.getPrimaryRaysCount();
             long shadowBefore = rayTracer.getShadowRaysCount();
             long openBefore = rayTracer.getOpenShadowRaysCount();
-            long start = System.nanoTime();
-            render.renderImage();
-            seconds[f] = (System.nanoTime() - start) / 1e9;
+            seconds[f] = timedRender(render);
             primary = rayTracer.getPrimaryRaysCount() - primaryBefore;
             shadow = rayTracer.getShadowRaysCount() - shadowBefore;
             open = rayTracer.getOpenShadowRaysCount() - openBefore;
         }
         render.writeToImage();
+        double first = warmup > 0 ? warm[0] : seconds[0];
         double median = median(seconds);
         System.out.printf("%s: %d pixels, %d primary rays/frame, %d shadow rays/frame (%.1f %% in open bundles),"
                         + " first frame %.3f s (with the build), median %.3f s/frame (frames %s s),"
                         + " %.2f M shadow rays/s%n",
                 name, size * size, primary, shadow, 100.0 * open / shadow, first, median, format(seconds),
                 shadow / median / 1e6);
+    }
+
+    /**
+     * Renders one frame.
+     *
+     * @param render the render
+     * @return the seconds it took
+     */
+    private static double timedRender(Render render) {
+        long start = System.nanoTime();
+        render.renderImage();
+        return (System.nanoTime() - start) / 1e9;
     }
 
     /** {@return the heap in use after a full collection, in bytes} */
