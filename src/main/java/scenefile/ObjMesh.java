@@ -177,7 +177,6 @@ public final class ObjMesh {
         return vertices;
     }
 
-
     /** Adds the triangle unless it is degenerate (the constructor refuses coincident or collinear vertices). */
     private static void addTriangle(List<Triangle> triangles, Point3D p1, Point3D p2, Point3D p3) {
         try {

@@ -24,10 +24,10 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      *
      * @param softShadows         whether lights with an area cast soft shadows
      * @param adaptiveSoftShadows whether a light's square is sampled adaptively
-     * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 or more
-     * @param antiAliasing        the number of rays along each side of a pixel, 1 or more
+     * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 to 1000
+     * @param antiAliasing        the number of rays along each side of a pixel, 1 to 1000
      * @param seed                the seed of the per-pixel random streams
-     * @throws IllegalArgumentException when a count is below 1
+     * @throws IllegalArgumentException when a count is below 1 or above 1000
      */
     public RenderSettings {
         JitteredGrid.requireSqrtSamples(sqrtBeamNum, "sqrtBeamNum");
