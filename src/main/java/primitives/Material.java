@@ -149,7 +149,7 @@ public class Material {
 
     @Override
     public String toString() {
-        return "Material{kD=" + kD + ", kS=" + kS + ", kT=" + kT + ", kR=" + kR + ", nShininess=" + nShininess + ", kG=" + kG
-                + ", kB=" + kB + "}";
+        return "Material{kD=" + kD + ", kS=" + kS + ", kT=" + kT + ", kR=" + kR + ", nShininess=" + nShininess
+                + ", kG=" + kG + ", kB=" + kB + "}";
     }
 }

@@ -310,8 +310,8 @@ class SceneLoaderTest {
         // TC12: kG just above 1 and a negative kB are errors at their element, naming the factor
         assertBadFile(file("big-kg.xml", "<scene>\n<geometries>\n<sphere center=\"0 0 0\" radius=\"1\" kG=\"1.5\"/>\n"
                 + "</geometries>\n</scene>\n"), 3, "kG (glossiness) must be at most 1", "TC12");
-        assertBadFile(file("negative-kb.xml", "<scene>\n<geometries>\n<sphere center=\"0 0 0\" radius=\"1\" kB=\"-0.1\"/>\n"
-                + "</geometries>\n</scene>\n"), 3, "kB (blurriness) must not be negative", "TC12");
+        assertBadFile(file("negative-kb.xml", "<scene>\n<geometries>\n<sphere center=\"0 0 0\" radius=\"1\""
+                + " kB=\"-0.1\"/>\n</geometries>\n</scene>\n"), 3, "kB (blurriness) must not be negative", "TC12");
         // TC13: gloss-rays 0 and 1001 are errors naming the attribute
         assertBadFile(file("gloss-rays-0.xml", "<scene>\n<render gloss-rays=\"0\"/>\n</scene>\n"), 2, "gloss-rays",
                 "TC13");
