@@ -412,6 +412,32 @@ class RayTracerBasicTest {
     }
 
     /**
+     * Test method for {@link RayTracerBasic#traceRay(Ray)}: no spread ray is traced into the surface.
+     * A floor z = 0 over a bright plane z = −10, a ray grazing the floor at 5.7° (the sky above is
+     * black): with kG 1 (rays up to 45° off the mirror direction) about half of the reflected rays
+     * would go down into the floor and see the bright plane.
+     */
+    @Test
+    void testSpreadRaysStayOnTheirSide() {
+        Ray grazing = new Ray(new Point3D(-100, 0, 10), new Vector(10, 0, -1));
+        Plane bright = new Plane(new Point3D(0, 0, -10), new Vector(0, 0, 1));
+        bright.setEmission(new Color(200, 200, 200));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a glossy mirror floor (kR 1, kG 1) reflects only the black sky: black
+        Scene glossy = new Scene("glossy floor over a bright plane");
+        glossy.geometries.add(floor(new Material().setKr(1).setKg(1), Color.BLACK), bright);
+        RayTracerBasic tracer = new RayTracerBasic(glossy);
+        tracer.setSqrtGlossRays(10);
+        assertColor(Color.BLACK, tracer.traceRay(grazing), "TC01: a reflected ray went into the floor");
+        assertEquals(100, tracer.getSpreadRaysCount(), "TC01: the floor must spread 10 × 10 rays");
+        // TC02: a blurry pane there instead (kT 1, kB 1) shows only the bright plane below: no ray comes back up
+        Scene blurry = new Scene("blurry pane over a bright plane");
+        blurry.geometries.add(floor(new Material().setKt(1).setKb(1), Color.BLACK), bright);
+        assertColor(new Color(200, 200, 200), new RayTracerBasic(blurry).setSqrtGlossRays(10).traceRay(grazing),
+                "TC02: a refracted ray came back up to the black sky");
+    }
+
+    /**
      * Test method for {@link RayTracerBasic#traceRay(Ray)}: the spread rays of a path grow linearly
      * with the recursion's depth. Between two facing glossy mirrors (kR 1) every ray bounces to the
      * recursion limit: the first mirror spreads a beam of k² rays, and each of them spreads one ray at
