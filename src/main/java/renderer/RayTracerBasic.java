@@ -185,6 +185,21 @@ public class RayTracerBasic extends RayTracerBase {
             ++state.spreadRays;
             return calcGlobalEffect(square.ray(sample[0], sample[1]), level, kx, kkx);
         }
+        return calcSpreadBeam(square, level, kx, kkx, state);
+    }
+
+    /**
+     * The average light along the rays through the jittered points of the tracer's gloss grid on a
+     * spread square. While they are traced, the spreading surfaces they meet spread one ray each.
+     *
+     * @param square the square around the sharp ray
+     * @param level  the recursion level of the surface point
+     * @param kx     the material's kR or kT
+     * @param kkx    the accumulated factor of the reflected or refracted light
+     * @param state  the calling thread's state
+     * @return the average colour, scaled by kx
+     */
+    private Color calcSpreadBeam(SpreadSquare square, int level, double kx, double kkx, ThreadState state) {
         JitteredGrid grid = getGlossGrid();
         int count = grid.getSamplesCount();
         double[] samples = state.spreadPoints(grid);
