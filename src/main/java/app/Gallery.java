@@ -4,6 +4,8 @@ import java.nio.file.Path;
 import java.util.List;
 
 import geometries.Geometries;
+import geometries.Plane;
+import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
 import lighting.AmbientLight;
@@ -60,7 +62,8 @@ public final class Gallery {
                 eightElements(), eightElements().withSoftShadows("softEightElements"),
                 twoSpheres(),
                 twoSpheresOnMirrors(),
-                trianglesTransparentSphere());
+                trianglesTransparentSphere(),
+                glossyFloorFrostedPane());
     }
 
     /**
@@ -229,5 +232,36 @@ public final class Gallery {
         scene.lights.add(new SpotLight(new Color(700, 400, 400), new Point3D(60, 50, 0), new Vector(0, 0, -1))
                 .setKl(4E-5).setKq(2E-7));
         return new Picture("refractionShadow", 600, 600, scene, frontCamera(1000, 200));
+    }
+
+    /**
+     * Glossy reflection and blurry transparency: spheres on a glossy floor (kG 0.03) in front of a
+     * brushed-metal mirror (kG 0.02), and a frosted glass pane (kB 0.04) in front of an orange sphere,
+     * under a square light with soft shadows.
+     */
+    private static Picture glossyFloorFrostedPane() {
+        Scene scene = new Scene("glossy floor and frosted pane").setBackground(new Color(25, 32, 50))
+                .setAmbientLight(new AmbientLight(WHITE, 0.1));
+        Material shiny = new Material().setKd(0.5).setKs(0.6).setShininess(80);
+        scene.geometries.add(
+                new Plane(new Point3D(0, -50, 0), new Vector(0, 1, 0)).setEmission(new Color(20, 16, 14))
+                        .setMaterial(new Material().setKd(0.2).setKs(0.3).setShininess(40).setKr(0.6).setKg(0.03)),
+                new Polygon(new Point3D(-230, -50, -300), new Point3D(-10, -50, -300), new Point3D(-10, 100, -300),
+                        new Point3D(-230, 100, -300)).setEmission(new Color(6, 6, 8))
+                        .setMaterial(new Material().setKd(0.05).setKs(0.3).setShininess(100).setKr(0.85)
+                                .setKg(0.02)),
+                new Sphere(new Point3D(-95, -15, -120), 35).setEmission(new Color(20, 60, 170)).setMaterial(shiny),
+                new Sphere(new Point3D(-10, -30, -20), 20).setEmission(new Color(30, 120, 60)).setMaterial(shiny),
+                new Sphere(new Point3D(105, -10, -190), 40).setEmission(new Color(200, 80, 10)).setMaterial(shiny),
+                new Polygon(new Point3D(40, -50, -80), new Point3D(170, -50, -80), new Point3D(170, 70, -80),
+                        new Point3D(40, 70, -80)).setEmission(new Color(10, 12, 14))
+                        .setMaterial(new Material().setKd(0.05).setKs(0.5).setShininess(150).setKt(0.85)
+                                .setKb(0.04)));
+        scene.lights.add(new PointLight(new Color(700, 650, 600), new Point3D(60, 250, 150)).setKl(0.0008)
+                .setKq(0.000004).setEdgesSize(60).setUV(new Vector(1, 0, 0), new Vector(0, 0, 1)));
+        Camera camera = new Camera(new Point3D(0, 60, 650), new Vector(0, -0.12, -1), new Vector(0, 1, -0.12))
+                .setVpSize(300, 200).setVpDistance(500);
+        return new Picture("glossyFloorFrostedPane", 600, 400, scene, camera, 0,
+                RenderSettings.DEFAULT.withSoftShadows(true).withSqrtBeamNum(4));
     }
 }

@@ -106,6 +106,11 @@ public class RenderCommand implements Callable<Integer> {
             description = "anti-aliasing: K x K rays per pixel, 1 for none (default: the scene file's)")
     private Integer antiAliasing;
 
+    @Option(names = "--gloss-rays", paramLabel = "G",
+            description = "glossy and blurry surfaces: G x G spread rays at the first one a ray meets, one at each"
+                    + " further one (default: the scene file's)")
+    private Integer glossRays;
+
     @Option(names = "--seed", paramLabel = "S",
             description = "the seed of the random sampling (default: the scene file's)")
     private Long seed;
@@ -310,6 +315,8 @@ public class RenderCommand implements Callable<Integer> {
             requireGrid("--beams", beams);
         if (antiAliasing != null)
             requireGrid("--aa", antiAliasing);
+        if (glossRays != null)
+            requireGrid("--gloss-rays", glossRays);
         if (threads < 0 || threads > MAX_THREADS)
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--threads must be 0 (one per core) to " + MAX_THREADS + ", got " + threads);
@@ -348,6 +355,8 @@ public class RenderCommand implements Callable<Integer> {
             settings = settings.withAntiAliasing(antiAliasing);
         if (seed != null)
             settings = settings.withSeed(seed);
+        if (glossRays != null)
+            settings = settings.withSqrtGlossRays(glossRays);
         int w = picture.nX();
         int h = picture.nY();
         if (width != null && height != null) {
@@ -407,17 +416,20 @@ public class RenderCommand implements Callable<Integer> {
         };
     }
 
-    /** Prints the image file, its size, the time and the ray counts. */
+    /** Prints the image file, its size, the time and the ray counts (spread rays only when there are any). */
     private void report(Path file, Picture picture, double seconds, RayTracerBase tracer) {
         long primary = tracer.getPrimaryRaysCount();
         long shadow = tracer.getShadowRaysCount();
+        long spread = tracer.getSpreadRaysCount();
         PrintWriter out = spec.commandLine().getOut();
         out.printf(Locale.ROOT, "Image:        %s%n", file.toAbsolutePath().normalize());
         out.printf(Locale.ROOT, "Size:         %d x %d pixels%n", picture.nX(), picture.nY());
         out.printf(Locale.ROOT, "Time:         %.3f s%n", seconds);
         out.printf(Locale.ROOT, "Primary rays: %d%n", primary);
         out.printf(Locale.ROOT, "Shadow rays:  %d%n", shadow);
-        out.printf(Locale.ROOT, "Rays/second:  %.0f%n", seconds > 0 ? (primary + shadow) / seconds : 0.0);
+        if (spread > 0)
+            out.printf(Locale.ROOT, "Spread rays:  %d%n", spread);
+        out.printf(Locale.ROOT, "Rays/second:  %.0f%n", seconds > 0 ? (primary + shadow + spread) / seconds : 0.0);
         out.flush();
     }
 

@@ -4,7 +4,13 @@ import static primitives.Util.requireNonNegative;
 
 /**
  * The surface properties of a geometry in the Phong model: diffuse {@code kD}, specular {@code kS},
- * transparency {@code kT}, reflection {@code kR} and shininess {@code nShininess}. All default to 0.
+ * transparency {@code kT}, reflection {@code kR} and shininess {@code nShininess}, plus the glossiness
+ * {@code kG} of its reflection and the blurriness {@code kB} of its transparency. All default to 0.
+ * <p>
+ * Glossiness and blurriness spread the reflected and refracted rays: the rays pass through a square
+ * perpendicular to the sharp (mirror or straight-through) ray, at unit distance along it, whose
+ * half-edge is {@code kG} (or {@code kB}). Both are in [0, 1]: 0 is the sharp mirror and the clear
+ * glass, and 1 spreads rays up to 45° off the sharp ray along the square's axes.
  */
 public class Material {
     private double kD;
@@ -12,6 +18,8 @@ public class Material {
     private double kT;
     private double kR;
     private int nShininess;
+    private double kG;
+    private double kB;
 
     /** Creates a material with every factor 0: a black body that neither reflects nor lets light through. */
     public Material() {
@@ -74,6 +82,30 @@ public class Material {
         return this;
     }
 
+    /**
+     * Sets the glossiness: how far reflected rays spread around the mirror direction (see the class
+     * comment for the geometry).
+     *
+     * @param kG the half-edge of the square of reflected rays at unit distance, in [0, 1]; 0 is a sharp mirror
+     * @return this material
+     */
+    public Material setKg(double kG) {
+        this.kG = requireFraction(kG, "material kG (glossiness)");
+        return this;
+    }
+
+    /**
+     * Sets the blurriness: how far refracted rays spread around the straight-through direction (see
+     * the class comment for the geometry).
+     *
+     * @param kB the half-edge of the square of refracted rays at unit distance, in [0, 1]; 0 is clear glass
+     * @return this material
+     */
+    public Material setKb(double kB) {
+        this.kB = requireFraction(kB, "material kB (blurriness)");
+        return this;
+    }
+
     /** {@return the diffuse factor} */
     public double getKd() {
         return kD;
@@ -99,6 +131,16 @@ public class Material {
         return nShininess;
     }
 
+    /** {@return the glossiness: the half-edge of the square of reflected rays at unit distance} */
+    public double getKg() {
+        return kG;
+    }
+
+    /** {@return the blurriness: the half-edge of the square of refracted rays at unit distance} */
+    public double getKb() {
+        return kB;
+    }
+
     private static double requireFraction(double value, String what) {
         if (requireNonNegative(value, what) > 1)
             throw new IllegalArgumentException(what + " must be at most 1, got " + value);
@@ -107,6 +149,7 @@ public class Material {
 
     @Override
     public String toString() {
-        return "Material{kD=" + kD + ", kS=" + kS + ", kT=" + kT + ", kR=" + kR + ", nShininess=" + nShininess + "}";
+        return "Material{kD=" + kD + ", kS=" + kS + ", kT=" + kT + ", kR=" + kR + ", nShininess=" + nShininess
+                + ", kG=" + kG + ", kB=" + kB + "}";
     }
 }

@@ -9,6 +9,7 @@ import static primitives.Util.requireNonNull;
  * one point is drawn uniformly at random in each. This is the one place sample positions come from:
  * soft shadows place their shadow rays on a light's square with it, anti-aliasing places its rays
  * in a pixel.
+ * Glossy and blurry surfaces place their spread rays on the square around the sharp ray with it too.
  * <p>
  * Cells are visited outline first (the cells on the grid's border, going round it), then the inner
  * cells row by row, so that adaptive sampling can look at the outline before deciding whether to

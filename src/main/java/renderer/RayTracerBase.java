@@ -18,12 +18,18 @@ import static primitives.Util.requireNonNull;
 public abstract class RayTracerBase {
     /** The default square root of the number of shadow rays per light: 9 × 9 = 81 rays. */
     public static final int DEFAULT_SQRT_BEAM_NUM = 9;
+    /**
+     * The default square root of the number of spread rays of a glossy or blurry surface: 5 × 5 = 25
+     * reflected (or refracted) rays.
+     */
+    public static final int DEFAULT_SQRT_GLOSS_RAYS = 5;
     /** The default seed of the random streams. */
     public static final long DEFAULT_SEED = 20_210_621L;
 
     /** The scene traced. */
     protected final Scene scene;
     private JitteredGrid beamGrid = new JitteredGrid(DEFAULT_SQRT_BEAM_NUM);
+    private JitteredGrid glossGrid = new JitteredGrid(DEFAULT_SQRT_GLOSS_RAYS);
     private boolean softShadows;
     private boolean adaptiveSoftShadows;
     private long seed = DEFAULT_SEED;
@@ -81,6 +87,25 @@ public abstract class RayTracerBase {
     }
 
     /**
+     * Sets the number of spread rays of glossy reflection and blurry transparency (materials with
+     * {@code kG} or {@code kB} above 0): sqrtGlossRays² reflected (or refracted) rays through the
+     * square around the sharp ray, at the first glossy or blurry surface a path meets. Below it, every
+     * further glossy or blurry surface of the path spreads one jittered ray, so the rays of a pixel
+     * grow linearly, not exponentially, with the depth of the recursion.
+     *
+     * @param sqrtGlossRays the number of cells along each side of the square, 1 to
+     *                      {@link JitteredGrid#MAX_SQRT_SAMPLES}
+     * @return this ray tracer
+     * @throws IllegalArgumentException when sqrtGlossRays is less than 1 or more than
+     *                                  {@link JitteredGrid#MAX_SQRT_SAMPLES}
+     */
+    public RayTracerBase setSqrtGlossRays(int sqrtGlossRays) {
+        JitteredGrid.requireSqrtSamples(sqrtGlossRays, "sqrtGlossRays");
+        this.glossGrid = new JitteredGrid(sqrtGlossRays);
+        return this;
+    }
+
+    /**
      * Turns soft shadows on or off (off by default; when off, the size of lights is ignored).
      *
      * @param softShadows true for soft shadows from lights with an area
@@ -125,6 +150,16 @@ public abstract class RayTracerBase {
         return beamGrid;
     }
 
+    /** {@return the square root of the number of spread rays of a glossy or blurry surface} */
+    public int getSqrtGlossRays() {
+        return glossGrid.getSqrtSamples();
+    }
+
+    /** {@return the grid the spread rays of glossy and blurry surfaces pass through} */
+    public JitteredGrid getGlossGrid() {
+        return glossGrid;
+    }
+
     /** {@return whether soft shadows are on} */
     public boolean isSoftShadows() {
         return softShadows;
@@ -159,6 +194,16 @@ public abstract class RayTracerBase {
      */
     public long getOpenShadowRaysCount() {
         return sum(state -> state.openShadowRays);
+    }
+
+    /**
+     * The reflected and refracted rays spread by glossy and blurry surfaces (the sharp rays of
+     * mirrors and clear glass are not counted).
+     *
+     * @return the number of such rays traced by this ray tracer so far
+     */
+    public long getSpreadRaysCount() {
+        return sum(state -> state.spreadRays);
     }
 
     private long sum(ToLongFunction<ThreadState> counter) {

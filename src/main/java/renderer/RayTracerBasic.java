@@ -24,6 +24,8 @@ public class RayTracerBasic extends RayTracerBase {
     /** Rays whose accumulated factor falls below this are not traced. */
     private static final double MIN_CALC_COLOR_K = 0.001;
     private static final double INITIAL_K = 1.0;
+    /** The grid of one jittered spread ray: a glossy or blurry surface met inside another's beam. */
+    private static final JitteredGrid SINGLE_SPREAD_RAY = new JitteredGrid(1);
 
     private volatile BoundingVolumeHierarchy accelerator;
     private boolean bruteForce;
@@ -134,19 +136,91 @@ public class RayTracerBasic extends RayTracerBase {
         return lightIntensity.scale(material.getKs() * Math.pow(minusVR, material.getShininess()));
     }
 
-    /** Reflected and refracted light, each traced while its factor stays above the limit. */
+    /**
+     * Reflected and refracted light, each traced while its factor stays above the limit: one sharp
+     * ray each from a mirror and clear glass, spread rays from glossy ({@code kG}) and blurry
+     * ({@code kB}) materials.
+     */
     private Color calcGlobalEffects(GeoPoint geoPoint, Vector v, Vector n, int level, double k) {
         Material material = geoPoint.geometry.getMaterial();
         Color color = Color.BLACK;
         double kR = material.getKr();
         double kkr = k * kR;
         if (kkr > MIN_CALC_COLOR_K)
-            color = calcGlobalEffect(constructReflectedRay(geoPoint.point, v, n), level, kR, kkr);
+            color = calcSpreadEffect(geoPoint.point, constructReflectedRay(geoPoint.point, v, n), n,
+                    material.getKg(), level, kR, kkr);
         double kT = material.getKt();
         double kkt = k * kT;
         if (kkt > MIN_CALC_COLOR_K)
-            color = color.add(calcGlobalEffect(constructRefractedRay(geoPoint.point, v, n), level, kT, kkt));
+            color = color.add(calcSpreadEffect(geoPoint.point, constructRefractedRay(geoPoint.point, v, n), n,
+                    material.getKb(), level, kT, kkt));
         return color;
+    }
+
+    /**
+     * The light along a sharp reflected or refracted ray, or, when the material spreads it, the
+     * average over rays through the {@link SpreadSquare} around it. The first spreading surface of a
+     * path traces the tracer's gloss grid, {@code sqrtGlossRays²} jittered rays; a spreading surface
+     * met by one of those rays traces one jittered ray, so a pixel's rays grow linearly with the
+     * recursion's depth, and the beam's average still takes in every surface's spread.
+     *
+     * @param point    the surface point
+     * @param sharpRay the sharp reflected or refracted ray
+     * @param n        the surface normal at the point
+     * @param spread   the material's kG or kB: the half-edge of the square at unit distance
+     * @param level    the recursion level of the point
+     * @param kx       the material's kR or kT
+     * @param kkx      the accumulated factor of the reflected or refracted light
+     * @return the reflected or refracted colour, scaled by kx
+     */
+    private Color calcSpreadEffect(Point3D point, Ray sharpRay, Vector n, double spread, int level, double kx,
+                                   double kkx) {
+        if (spread == 0)
+            return calcGlobalEffect(sharpRay, level, kx, kkx);
+        ThreadState state = threadState();
+        SpreadSquare square = new SpreadSquare(point, sharpRay, n, spread);
+        if (state.inSpreadBeam) {
+            double[] sample = state.spreadPoint();
+            SINGLE_SPREAD_RAY.sample(state.random, sample);
+            ++state.spreadRays;
+            return calcGlobalEffect(square.ray(sample[0], sample[1]), level, kx, kkx);
+        }
+        return calcSpreadBeam(square, level, kx, kkx, state);
+    }
+
+    /**
+     * The average light along the rays through the jittered points of the tracer's gloss grid on a
+     * spread square. While they are traced, the spreading surfaces they meet spread one ray each.
+     *
+     * @param square the square around the sharp ray
+     * @param level  the recursion level of the surface point
+     * @param kx     the material's kR or kT
+     * @param kkx    the accumulated factor of the reflected or refracted light
+     * @param state  the calling thread's state
+     * @return the average colour, scaled by kx
+     */
+    private Color calcSpreadBeam(SpreadSquare square, int level, double kx, double kkx, ThreadState state) {
+        JitteredGrid grid = getGlossGrid();
+        int count = grid.getSamplesCount();
+        double[] samples = state.spreadPoints(grid);
+        grid.sample(state.random, samples);
+        state.spreadRays += count;
+        state.inSpreadBeam = true;
+        try {
+            double r = 0;
+            double g = 0;
+            double b = 0;
+            for (int s = 0; s < count; ++s) {
+                Color color = calcGlobalEffect(square.ray(samples[2 * s], samples[2 * s + 1]), level, 1, kkx);
+                r += color.getR();
+                g += color.getG();
+                b += color.getB();
+            }
+            double scale = kx / count;
+            return new Color(r * scale, g * scale, b * scale);
+        } finally {
+            state.inSpreadBeam = false;
+        }
     }
 
     private Color calcGlobalEffect(Ray ray, int level, double kx, double kkx) {

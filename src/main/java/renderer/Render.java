@@ -103,6 +103,20 @@ public class Render {
     }
 
     /**
+     * Sets the number of spread rays of glossy and blurry surfaces in the ray tracer.
+     *
+     * @param sqrtGlossRays the number of cells along each side of the square of spread rays, 1 to
+     *                      {@link JitteredGrid#MAX_SQRT_SAMPLES}
+     * @return this render
+     * @throws MissingResourceException when the ray tracer is not set yet
+     * @see RayTracerBase#setSqrtGlossRays(int)
+     */
+    public Render setSqrtGlossRays(int sqrtGlossRays) {
+        requireRayTracer().setSqrtGlossRays(sqrtGlossRays);
+        return this;
+    }
+
+    /**
      * Turns adaptive soft shadows on or off in the ray tracer.
      *
      * @param adaptiveSoftShadows true for adaptive sampling of lights' squares

@@ -15,7 +15,14 @@ final class ThreadState {
     long shadowRays;
     /** The shadow rays of this thread whose bundle nothing could block. */
     long openShadowRays;
+    /** The reflected and refracted rays spread by glossy and blurry surfaces on this thread. */
+    long spreadRays;
+    /** Whether this thread is tracing the rays of a glossy or blurry beam (which spread no beam of their own). */
+    boolean inSpreadBeam;
     private double[] points = new double[0];
+    private double[] spreadPoints = new double[0];
+    /** Room for the one jittered point of a spread ray inside a beam. */
+    private final double[] spreadPoint = new double[2];
     private BoundingVolumeHierarchy queried;
     private BoundingVolumeHierarchy.Query query;
 
@@ -39,6 +46,25 @@ final class ThreadState {
         if (points.length < length)
             points = new double[length];
         return points;
+    }
+
+    /**
+     * Room for the sample points of a glossy or blurry beam, reused from call to call and apart from
+     * {@link #points(JitteredGrid)}, which the shadow rays of the beam's rays use meanwhile.
+     *
+     * @param grid the grid
+     * @return an array of at least 2 k² doubles
+     */
+    double[] spreadPoints(JitteredGrid grid) {
+        int length = 2 * grid.getSamplesCount();
+        if (spreadPoints.length < length)
+            spreadPoints = new double[length];
+        return spreadPoints;
+    }
+
+    /** {@return room for the one jittered point of a spread ray inside a beam (2 doubles)} */
+    double[] spreadPoint() {
+        return spreadPoint;
     }
 
     /**

@@ -7,5 +7,8 @@
  * Soft shadows, adaptive soft shadows and anti-aliasing all take their random points from one sampler,
  * {@link renderer.JitteredGrid}, fed by a random stream per pixel, so the same scene and settings give the
  * same picture bit for bit whatever the number of threads.
+ * <p>
+ * The spread reflected and refracted rays of glossy and blurry materials (a material's {@code kG} and
+ * {@code kB}) come from the same sampler and streams.
  */
 package renderer;

@@ -5,17 +5,20 @@ import renderer.RayTracerBase;
 import renderer.Render;
 
 /**
- * How a picture is rendered: soft shadows, shadow rays per light, anti-aliasing and the random seed.
+ * How a picture is rendered: soft shadows, shadow rays per light, anti-aliasing, the random seed and
+ * the spread rays of glossy and blurry surfaces.
  *
  * @param softShadows         whether lights with an area cast soft shadows
  * @param adaptiveSoftShadows whether a light's square is sampled adaptively (outline first)
  * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 to 1000
  * @param antiAliasing        the number of rays along each side of a pixel, 1 to 1000
  * @param seed                the seed of the per-pixel random streams
+ * @param sqrtGlossRays       the number of spread-ray cells along each side of the square of a glossy or
+ *                            blurry surface, 1 to 1000
  */
 public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, int sqrtBeamNum, int antiAliasing,
-                             long seed) {
-    /** Hard shadows, 9 × 9 cells, one ray per pixel, the default seed. */
+                             long seed, int sqrtGlossRays) {
+    /** Hard shadows, 9 × 9 cells, one ray per pixel, the default seed, 5 × 5 spread rays. */
     public static final RenderSettings DEFAULT = new RenderSettings(false, false,
             RayTracerBase.DEFAULT_SQRT_BEAM_NUM, 1, RayTracerBase.DEFAULT_SEED);
 
@@ -27,11 +30,30 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 to 1000
      * @param antiAliasing        the number of rays along each side of a pixel, 1 to 1000
      * @param seed                the seed of the per-pixel random streams
+     * @param sqrtGlossRays       the number of spread-ray cells along each side of a glossy or blurry
+     *                            surface's square, 1 to 1000
      * @throws IllegalArgumentException when a count is below 1 or above 1000
      */
     public RenderSettings {
         JitteredGrid.requireSqrtSamples(sqrtBeamNum, "sqrtBeamNum");
         JitteredGrid.requireSqrtSamples(antiAliasing, "anti-aliasing (rays along each side of a pixel)");
+        JitteredGrid.requireSqrtSamples(sqrtGlossRays, "sqrtGlossRays");
+    }
+
+    /**
+     * Checks the counts; glossy and blurry surfaces spread the default number of rays
+     * ({@link RayTracerBase#DEFAULT_SQRT_GLOSS_RAYS} along each side).
+     *
+     * @param softShadows         whether lights with an area cast soft shadows
+     * @param adaptiveSoftShadows whether a light's square is sampled adaptively
+     * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 to 1000
+     * @param antiAliasing        the number of rays along each side of a pixel, 1 to 1000
+     * @param seed                the seed of the per-pixel random streams
+     * @throws IllegalArgumentException when a count is below 1 or above 1000
+     */
+    public RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, int sqrtBeamNum, int antiAliasing,
+                          long seed) {
+        this(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed, RayTracerBase.DEFAULT_SQRT_GLOSS_RAYS);
     }
 
     /**
@@ -41,7 +63,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with soft shadows on or off
      */
     public RenderSettings withSoftShadows(boolean on) {
-        return new RenderSettings(on, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed);
+        return new RenderSettings(on, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed, sqrtGlossRays);
     }
 
     /**
@@ -51,7 +73,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with adaptive soft shadows on or off
      */
     public RenderSettings withAdaptiveSoftShadows(boolean on) {
-        return new RenderSettings(softShadows, on, sqrtBeamNum, antiAliasing, seed);
+        return new RenderSettings(softShadows, on, sqrtBeamNum, antiAliasing, seed, sqrtGlossRays);
     }
 
     /**
@@ -61,7 +83,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with n × n + 1 shadow rays per light
      */
     public RenderSettings withSqrtBeamNum(int n) {
-        return new RenderSettings(softShadows, adaptiveSoftShadows, n, antiAliasing, seed);
+        return new RenderSettings(softShadows, adaptiveSoftShadows, n, antiAliasing, seed, sqrtGlossRays);
     }
 
     /**
@@ -71,7 +93,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with k × k rays per pixel
      */
     public RenderSettings withAntiAliasing(int k) {
-        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, k, seed);
+        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, k, seed, sqrtGlossRays);
     }
 
     /**
@@ -81,7 +103,18 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with another seed
      */
     public RenderSettings withSeed(long newSeed) {
-        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, newSeed);
+        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, newSeed,
+                sqrtGlossRays);
+    }
+
+    /**
+     * Sets the number of spread rays of glossy and blurry surfaces.
+     *
+     * @param n the number of cells along each side of the square of spread rays, 1 to 1000
+     * @return these settings with n × n spread rays at the first glossy or blurry surface of a path
+     */
+    public RenderSettings withSqrtGlossRays(int n) {
+        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed, n);
     }
 
     /**
@@ -92,6 +125,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      */
     public Render applyTo(Render render) {
         return render.setSoftShadows(softShadows).setAdaptiveSoftShadows(adaptiveSoftShadows)
-                .setSqrtBeamNum(sqrtBeamNum).setAntiAliasing(antiAliasing).setSeed(seed);
+                .setSqrtBeamNum(sqrtBeamNum).setAntiAliasing(antiAliasing).setSeed(seed)
+                .setSqrtGlossRays(sqrtGlossRays);
     }
 }

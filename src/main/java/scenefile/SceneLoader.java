@@ -102,7 +102,8 @@ public final class SceneLoader {
         if (render == null)
             return RenderSettings.DEFAULT;
         return build(render, () -> new RenderSettings(render.flag("soft-shadows"), render.flag("adaptive"),
-                grid(render, "beams"), grid(render, "anti-aliasing"), render.longInteger("seed")));
+                grid(render, "beams"), grid(render, "anti-aliasing"), render.longInteger("seed"),
+                grid(render, "gloss-rays")));
     }
 
     /** A sample grid's size, named by its attribute when it is out of bounds. */
@@ -188,6 +189,7 @@ public final class SceneLoader {
         return body.setEmission(element.color("emission"))
                 .setMaterial(new Material().setKd(element.number("kD")).setKs(element.number("kS"))
                         .setKt(element.number("kT")).setKr(element.number("kR"))
+                        .setKg(element.number("kG")).setKb(element.number("kB"))
                         .setShininess(element.integer("nShininess")));
     }
 

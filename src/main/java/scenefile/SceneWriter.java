@@ -110,6 +110,8 @@ public final class SceneWriter {
                         Integer.toString(RenderSettings.DEFAULT.sqrtBeamNum()))
                 .attribute("anti-aliasing", Integer.toString(settings.antiAliasing()), "1")
                 .attribute("seed", Long.toString(settings.seed()), Long.toString(RenderSettings.DEFAULT.seed()))
+                .attribute("gloss-rays", Integer.toString(settings.sqrtGlossRays()),
+                        Integer.toString(RenderSettings.DEFAULT.sqrtGlossRays()))
                 .emptyOrNothing();
         // the ambient light keeps only Ia·kA: written as the colour, with kA = 1
         xml.start("ambient-light").attribute("color", color(scene.ambientLight.getIntensity()), "0 0 0")
@@ -228,6 +230,7 @@ public final class SceneWriter {
         xml.attribute("emission", color(body.getEmission()), "0 0 0")
                 .attribute("kD", number(material.getKd()), "0").attribute("kS", number(material.getKs()), "0")
                 .attribute("kT", number(material.getKt()), "0").attribute("kR", number(material.getKr()), "0")
+                .attribute("kG", number(material.getKg()), "0").attribute("kB", number(material.getKb()), "0")
                 .attribute("nShininess", Integer.toString(material.getShininess()), "0");
     }
 

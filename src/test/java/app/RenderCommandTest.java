@@ -335,6 +335,45 @@ class RenderCommandTest {
         return true;
     }
 
+    /**
+     * Test method for {@link RenderCommand#call()}: --gloss-rays sets the spread rays of glossy and
+     * blurry surfaces (the floor made a glossy mirror), and its help.
+     */
+    @Test
+    void testGlossRays() {
+        String glossy = SCENE.replace("kD=\"0.6\"", "kD=\"0.6\" kR=\"0.5\" kG=\"0.1\"");
+        assertNotEquals(SCENE, glossy, "the test scene's floor was not found");
+        Path file = TestFiles.write(FOLDER, "cliGlossScene.xml", glossy.formatted(""));
+        String[] size = {"--width", "60", "--height", "40"};
+        long twoByTwo = reported(run(concat(new String[]{file.toString(), "-o", FOLDER.resolve("gloss2.png").toString(),
+                "--gloss-rays", "2"}, size)), "Spread rays:");
+        long threeByThree = reported(run(concat(new String[]{file.toString(), "-o",
+                FOLDER.resolve("gloss3.png").toString(), "--gloss-rays", "3"}, size)), "Spread rays:");
+        // ===== Equivalence Partitions Tests =====
+        // TC01: each floor pixel spreads 2 × 2 or 3 × 3 rays: the counts are as 4 to 9
+        assertTrue(twoByTwo > 0, "TC01: the glossy floor must spread rays");
+        assertEquals(9 * twoByTwo, 4 * threeByThree, "TC01: --gloss-rays 3 must spread 9/4 as many rays as 2");
+        // TC02: without the option the file's gloss-rays (2) is kept
+        Path twoFile = TestFiles.write(FOLDER, "cliGlossScene2.xml", glossy.formatted("<render gloss-rays=\"2\"/>"));
+        assertEquals(twoByTwo, reported(run(concat(new String[]{twoFile.toString(), "-o",
+                FOLDER.resolve("gloss-file.png").toString()}, size)), "Spread rays:"),
+                "TC02: the file's gloss-rays must be kept");
+        // TC03: the help lists --gloss-rays
+        assertTrue(run("--help").out().contains("--gloss-rays=G"), "TC03: the help does not list --gloss-rays");
+        // TC04: a scene with no glossy or blurry surface reports no spread rays
+        assertFalse(render("no-gloss", size).out().contains("Spread rays:"), "TC04: no spread rays to report");
+
+        // ===== Boundary Values Tests =====
+        // TC11: --gloss-rays 0 and 1001 are bad arguments: exit 2, one line naming the option
+        for (String bad : List.of("0", "1001")) {
+            Result result = run(file.toString(), "-o", FOLDER.resolve("gloss-bad.png").toString(), "--gloss-rays", bad);
+            assertEquals(2, result.code(), "TC11: --gloss-rays " + bad + " must exit with 2");
+            assertOneLine(result, "TC11");
+            assertTrue(result.err().contains("--gloss-rays must be between 1 and 1000"),
+                    "TC11: the line must name --gloss-rays and its bounds: " + result.err());
+        }
+    }
+
     /** Test method for --help and --version. */
     @Test
     void testHelp() {

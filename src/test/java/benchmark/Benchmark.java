@@ -7,6 +7,7 @@ import java.util.List;
 
 import geometries.BoundingVolumeHierarchy;
 import geometries.Geometries;
+import geometries.Geometry;
 import geometries.Plane;
 import geometries.Sphere;
 import geometries.Triangle;
@@ -26,7 +27,8 @@ import scene.Scene;
  * floor, one square light of edge 20, soft shadows with 9 × 9 + 1 shadow rays, 800 × 800) and M (the
  * same with every sphere tessellated into a triangle mesh); at mesh scale G10k, G100k and G1M (a
  * bumpy {@link Terrain} of about 10k, 100k and 1M triangles, 400 × 400, a light of edge 60) and F2
- * (a forest of 20 × 60 small spheres, 400 × 400, the same light). Per scene it prints:
+ * (a forest of 20 × 60 small spheres, 400 × 400, the same light); SG (scene S with a glossy floor, kR
+ * 0.5 and kG 0.05, 5 × 5 spread rays at each floor point, 400 × 400). Per scene it prints:
  * <ul>
  * <li>the bodies in the hierarchy, the seconds of building it (the median of {@value #BUILDS}
  * builds on the render's threads, outside any render), and the bytes per body of the scene and its
@@ -36,7 +38,9 @@ import scene.Scene;
  * <li>the primary and shadow rays of a frame (and the share of the shadow rays whose bundle was
  * open: nothing could block them, so no body was tested), the seconds of the first frame (which
  * builds the render's hierarchy), the median seconds of the timed frames (warm: the hierarchy is
- * built once, not per frame), and million shadow rays per second.</li>
+ * built once, not per frame), and million shadow rays per second;</li>
+ * <li>with glossy or blurry surfaces, the spread rays of a frame and million rays (primary, shadow
+ * and spread) per second.</li>
  * </ul>
  * <p>
  * Options: {@code --scene} a scene, several separated by commas, or {@code all} (the default: S and
@@ -46,7 +50,7 @@ import scene.Scene;
  */
 public final class Benchmark {
     /** The scenes, by name. */
-    private static final List<String> SCENES = List.of("S", "M", "G10k", "G100k", "G1M", "F2");
+    private static final List<String> SCENES = List.of("S", "M", "G10k", "G100k", "G1M", "F2", "SG");
     /** The width and height of the pictures of S and M, in pixels. */
     private static final int SIZE = 800;
     /** The width and height of the pictures of the terrains and the forest, in pixels. */
@@ -69,6 +73,8 @@ public final class Benchmark {
     private static final Path OUTPUT = Path.of("target", "benchmark");
     /** The material of every body. */
     private static final Material DIFFUSE = new Material().setKd(0.8);
+    /** The floor of scene SG: half diffuse, half a glossy mirror. */
+    private static final Material GLOSSY_FLOOR = new Material().setKd(0.5).setKr(0.5).setKg(0.05);
 
     /** Not instantiable. */
     private Benchmark() {
@@ -160,14 +166,17 @@ public final class Benchmark {
         long primary = 0;
         long shadow = 0;
         long open = 0;
+        long spread = 0;
         for (int f = 0; f < frames; ++f) {
             long primaryBefore = rayTracer.getPrimaryRaysCount();
             long shadowBefore = rayTracer.getShadowRaysCount();
             long openBefore = rayTracer.getOpenShadowRaysCount();
+            long spreadBefore = rayTracer.getSpreadRaysCount();
             seconds[f] = timedRender(render);
             primary = rayTracer.getPrimaryRaysCount() - primaryBefore;
             shadow = rayTracer.getShadowRaysCount() - shadowBefore;
             open = rayTracer.getOpenShadowRaysCount() - openBefore;
+            spread = rayTracer.getSpreadRaysCount() - spreadBefore;
         }
         render.writeToImage();
         double first = warmup > 0 ? warm[0] : seconds[0];
@@ -177,6 +186,9 @@ public final class Benchmark {
                         + " %.2f M shadow rays/s%n",
                 name, size * size, primary, shadow, 100.0 * open / shadow, first, median, format(seconds),
                 shadow / median / 1e6);
+        if (spread > 0)
+            System.out.printf("%s: %d spread rays/frame, %.2f M rays/s (primary, shadow and spread)%n", name, spread,
+                    (primary + shadow + spread) / median / 1e6);
     }
 
     /**
@@ -218,6 +230,7 @@ public final class Benchmark {
         return switch (name) {
             case "S", "M" -> buildScene(name.equals("M"));
             case "F2" -> forest();
+            case "SG" -> glossyFloor();
             default -> terrain(name, Integer.parseInt(name.substring(1).replace("k", "000").replace("M", "000000")));
         };
     }
@@ -262,6 +275,13 @@ public final class Benchmark {
             for (int k = 0; k < FOREST_ROWS; ++k)
                 scene.geometries.add(new Sphere(new Point3D(-95 + TREE_SPACING * i, -37, 330 - TREE_SPACING * k),
                         TREE_RADIUS).setMaterial(DIFFUSE));
+        return scene;
+    }
+
+    /** {@return scene SG: scene S with a glossy floor} */
+    private static Scene glossyFloor() {
+        Scene scene = buildScene(false);
+        ((Geometry) scene.geometries.getGeometries().get(0)).setMaterial(GLOSSY_FLOOR);
         return scene;
     }
 
@@ -347,7 +367,7 @@ public final class Benchmark {
      */
     private static <T> T usage(String problem) {
         System.err.println("benchmark: " + problem);
-        System.err.println("usage: Benchmark [--scene S|M|G10k|G100k|G1M|F2|all, or several separated by commas]"
+        System.err.println("usage: Benchmark [--scene S|M|G10k|G100k|G1M|F2|SG|all, or several separated by commas]"
                 + " [--frames N] [--warmup N] [--threads N]");
         System.exit(2);
         throw new IllegalStateException(problem);

@@ -3,6 +3,9 @@ package primitives;
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
 
+import java.util.function.BiFunction;
+import java.util.function.ToDoubleFunction;
+
 import org.junit.jupiter.api.Test;
 
 /**
@@ -21,6 +24,9 @@ class MaterialTest {
         assertEquals(0, m.getKt(), 0, "TC01: default kT must be 0");
         assertEquals(0, m.getKr(), 0, "TC01: default kR must be 0");
         assertEquals(0, m.getShininess(), "TC01: default shininess must be 0");
+        // TC02: glossiness and blurriness default to 0 (a sharp mirror, clear glass)
+        assertEquals(0, m.getKg(), 0, "TC02: default kG must be 0");
+        assertEquals(0, m.getKb(), 0, "TC02: default kB must be 0");
     }
 
     /** Test method for the chaining of the setters of {@link primitives.Material}. */
@@ -182,5 +188,60 @@ class MaterialTest {
         e = assertThrows(IllegalArgumentException.class, () -> m.setShininess(-1),
                 "TC11: shininess -1 must be rejected");
         assertMessage(e, "shininess", "TC11");
+    }
+
+    /** Test method for {@link primitives.Material#setKg(double)}. */
+    @Test
+    void testSetKg() {
+        assertSpread("kG", Material::setKg, Material::getKg);
+    }
+
+    /** Test method for {@link primitives.Material#setKb(double)}. */
+    @Test
+    void testSetKb() {
+        assertSpread("kB", Material::setKb, Material::getKb);
+    }
+
+    /**
+     * Checks a spread factor's setter (glossiness or blurriness): kept in [0, 1], rejected outside
+     * with a message naming it, chained.
+     */
+    private static void assertSpread(String name, BiFunction<Material, Double, Material> setter,
+                                     ToDoubleFunction<Material> getter) {
+        Material m = new Material();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 0.2 is kept, and the setter returns the material
+        assertSame(m, setter.apply(m, 0.2), "TC01: the " + name + " setter must return this");
+        assertEquals(0.2, getter.applyAsDouble(m), 1e-15, "TC01: wrong " + name);
+        // TC02: negative is rejected, the message names it and "negative"; the value stays 0.2
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> setter.apply(m, -0.3),
+                "TC02: negative " + name + " must be rejected");
+        assertMessage(e, name, "TC02");
+        assertMessage(e, "negative", "TC02");
+        assertEquals(0.2, getter.applyAsDouble(m), 1e-15, "TC02: a rejected " + name + " must not change it");
+        // TC03: above 1 is rejected ("at most 1")
+        e = assertThrows(IllegalArgumentException.class, () -> setter.apply(m, 3.0),
+                "TC03: " + name + " above 1 must be rejected");
+        assertMessage(e, name, "TC03");
+        assertMessage(e, "at most 1", "TC03");
+        // TC04: NaN and infinite are rejected ("finite")
+        e = assertThrows(IllegalArgumentException.class, () -> setter.apply(m, Double.NaN),
+                "TC04: NaN " + name + " must be rejected");
+        assertMessage(e, "finite", "TC04");
+        e = assertThrows(IllegalArgumentException.class, () -> setter.apply(m, Double.POSITIVE_INFINITY),
+                "TC04: infinite " + name + " must be rejected");
+        assertMessage(e, "finite", "TC04");
+
+        // ===== Boundary Values Tests =====
+        // TC10: 0 is accepted (0: sharp)
+        assertEquals(0, getter.applyAsDouble(setter.apply(m, 0.0)), 0, "TC10: " + name + " 0 must be accepted");
+        // TC11: 1 is accepted (1: 45° off the sharp ray)
+        assertEquals(1, getter.applyAsDouble(setter.apply(m, 1.0)), 0, "TC11: " + name + " 1 must be accepted");
+        // TC12: just above 1 is rejected (Math.nextUp(1))
+        assertThrows(IllegalArgumentException.class, () -> setter.apply(m, Math.nextUp(1.0)),
+                "TC12: " + name + " just above 1 must be rejected");
+        // TC13: the negative value closest to 0 is rejected (-Double.MIN_VALUE)
+        assertThrows(IllegalArgumentException.class, () -> setter.apply(m, -Double.MIN_VALUE),
+                "TC13: " + name + " -MIN_VALUE must be rejected");
     }
 }

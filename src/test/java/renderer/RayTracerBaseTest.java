@@ -42,6 +42,11 @@ class RayTracerBaseTest {
         assertEquals(0, tracer.getPrimaryRaysCount(), "TC04: the primary ray count must start at 0");
         assertEquals(0, tracer.getShadowRaysCount(), "TC04: the shadow ray count must start at 0");
         assertEquals(0, tracer.getOpenShadowRaysCount(), "TC04: the open shadow ray count must start at 0");
+        assertEquals(0, tracer.getSpreadRaysCount(), "TC04: the spread ray count must start at 0");
+        // TC05: sqrtGlossRays 5 (= DEFAULT_SQRT_GLOSS_RAYS), a 5 × 5 gloss grid
+        assertEquals(5, RayTracerBase.DEFAULT_SQRT_GLOSS_RAYS, "TC05: the default sqrtGlossRays must be 5");
+        assertEquals(5, tracer.getSqrtGlossRays(), "TC05: wrong default sqrtGlossRays");
+        assertEquals(25, tracer.getGlossGrid().getSamplesCount(), "TC05: the default gloss grid must have 25 cells");
 
         // ===== Boundary Values Tests =====
         // TC11: a null scene is rejected with a message naming the scene
@@ -85,6 +90,38 @@ class RayTracerBaseTest {
                 "TC13: sqrtBeamNum 46341 must be rejected");
         assertMessage(e, "sqrtBeamNum must be between 1 and 1000", "TC13");
         assertEquals(1, tracer.getSqrtBeamNum(), "TC13: a rejected sqrtBeamNum must leave 1");
+    }
+
+    /** Test method for {@link RayTracerBase#setSqrtGlossRays(int)} and {@link RayTracerBase#getGlossGrid()}. */
+    @Test
+    void testSetSqrtGlossRays() {
+        RayTracerBase tracer = tracer();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: sqrtGlossRays 3: the setter returns the tracer, the grid is 3 × 3, the shadow grid stays 9 × 9
+        assertSame(tracer, tracer.setSqrtGlossRays(3), "TC01: setSqrtGlossRays must return the same ray tracer");
+        assertEquals(3, tracer.getSqrtGlossRays(), "TC01: sqrtGlossRays must be 3");
+        assertEquals(9, tracer.getGlossGrid().getSamplesCount(), "TC01: the gloss grid must have 9 cells");
+        assertEquals(9, tracer.getSqrtBeamNum(), "TC01: the shadow grid must not change");
+        // TC02: a negative count is rejected naming sqrtGlossRays, and the grid stays
+        JitteredGrid before = tracer.getGlossGrid();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> tracer.setSqrtGlossRays(-1),
+                "TC02: sqrtGlossRays -1 must be rejected");
+        assertMessage(e, "sqrtGlossRays", "TC02");
+        assertSame(before, tracer.getGlossGrid(), "TC02: a rejected sqrtGlossRays must leave the grid");
+
+        // ===== Boundary Values Tests =====
+        // TC11: 1 (one jittered ray) and 1000 (the largest grid) are accepted
+        assertEquals(1, tracer.setSqrtGlossRays(1).getSqrtGlossRays(), "TC11: sqrtGlossRays 1 must be accepted");
+        assertEquals(JitteredGrid.MAX_SQRT_SAMPLES,
+                tracer.setSqrtGlossRays(JitteredGrid.MAX_SQRT_SAMPLES).getSqrtGlossRays(),
+                "TC11: sqrtGlossRays 1000 must be accepted");
+        // TC12: 0 and 1001 are rejected, naming the bounds
+        e = assertThrows(IllegalArgumentException.class, () -> tracer.setSqrtGlossRays(0),
+                "TC12: sqrtGlossRays 0 must be rejected");
+        assertMessage(e, "between 1 and 1000", "TC12");
+        assertThrows(IllegalArgumentException.class, () -> tracer.setSqrtGlossRays(JitteredGrid.MAX_SQRT_SAMPLES + 1),
+                "TC12: sqrtGlossRays 1001 must be rejected");
     }
 
     /**

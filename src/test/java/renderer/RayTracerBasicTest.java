@@ -11,7 +11,9 @@ import static testutil.TestAssertions.assertMessage;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.function.DoubleFunction;
 
 import org.junit.jupiter.api.Test;
 
@@ -240,6 +242,229 @@ class RayTracerBasicTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new RayTracerBasic(null),
                 "TC11: a null scene must be rejected");
         assertMessage(e, "scene", "TC11");
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Glossy reflection and blurry transparency. The camera looks straight down on 100 × 6 pixels over
+    // 20 × 1.2 units (a column is 0.2 wide, centres at x = −9.9 + 0.2·j). A bright stripe 1 unit wide
+    // is seen 50 units away: in a mirror tilted 45° (the reflected rays go along x to the stripe on
+    // the wall x = 50, z from −0.48 to 0.52) or through a pane z = 0 (the refracted rays go on down to
+    // the stripe on the floor z = −50, as seen from x −0.52 to 0.48). Sharp, it covers exactly 5 columns
+    // (centres −0.5 to 0.3, each 0.02 inside). Spread by a square of half-edge h at unit distance, the
+    // rays reach ±50·h around it, so the stripe's image is 1 + 100·h units wide.
+    // ---------------------------------------------------------------------------------------------
+
+    private static final int SPREAD_COLUMNS = 100;
+    private static final int SPREAD_ROWS = 6;
+    private static final double SPREAD_DISTANCE = 50;
+    private static final double COLUMN_WIDTH = 0.2;
+    private static final double STRIPE_WIDTH = 1;
+    private static final Color STRIPE_EMISSION = new Color(200, 200, 200);
+    private static final Path SPREAD_FOLDER = Path.of("target", "test-images", "glossy");
+
+    /** The stripe seen in a mirror tilted 45° (normal (1, 0, 1)) of the given material. */
+    private static Scene mirrorScene(Material mirror) {
+        Scene scene = new Scene("glossy mirror");
+        double x = SPREAD_DISTANCE;
+        scene.geometries.add(new Plane(Point3D.ZERO, new Vector(1, 0, 1)).setMaterial(mirror),
+                new Polygon(new Point3D(x, -100, -0.48), new Point3D(x, 100, -0.48), new Point3D(x, 100, 0.52),
+                        new Point3D(x, -100, 0.52)).setEmission(STRIPE_EMISSION));
+        return scene;
+    }
+
+    /**
+     * The stripe seen through a pane z = 0 of the given material. The stripe is 1050 units from the
+     * camera, not 1000 like the pane: it is placed 1.05 times as wide and as far off the axis.
+     */
+    private static Scene paneScene(Material pane) {
+        Scene scene = new Scene("blurry pane");
+        double z = -SPREAD_DISTANCE;
+        double left = -0.52 * 1.05;
+        double right = 0.48 * 1.05;
+        scene.geometries.add(floor(pane, Color.BLACK),
+                new Polygon(new Point3D(left, -100, z), new Point3D(right, -100, z), new Point3D(right, 100, z),
+                        new Point3D(left, 100, z)).setEmission(STRIPE_EMISSION));
+        return scene;
+    }
+
+    /** Renders a scene of the stripe with 10 × 10 spread rays and returns the image. */
+    private static ImageWriter renderSpread(String name, Scene scene, int threads, long seed) {
+        ImageWriter image = new ImageWriter(name, SPREAD_COLUMNS, SPREAD_ROWS, SPREAD_FOLDER);
+        Render render = new Render().setImageWriter(image)
+                .setCamera(new Camera(new Point3D(0, 0, 1000), DOWN, new Vector(0, 1, 0))
+                        .setVpSize(SPREAD_COLUMNS * COLUMN_WIDTH, SPREAD_ROWS * COLUMN_WIDTH).setVpDistance(1000))
+                .setRayTracer(new RayTracerBasic(scene)).setSqrtGlossRays(10).setSeed(seed)
+                .setMultithreading(threads);
+        render.renderImage();
+        render.writeToImage();
+        return image;
+    }
+
+    /** The number of columns of the middle row where the stripe is seen (brighter than 5). */
+    private static int stripeWidth(ImageWriter image) {
+        int width = 0;
+        for (int x = 0; x < SPREAD_COLUMNS; ++x)
+            if (image.getPixel(x, SPREAD_ROWS / 2).getRed() > 5)
+                ++width;
+        return width;
+    }
+
+    /** The sum over all pixels of the difference of their red levels. */
+    private static long pictureDifference(ImageWriter a, ImageWriter b) {
+        long sum = 0;
+        for (int y = 0; y < SPREAD_ROWS; ++y)
+            for (int x = 0; x < SPREAD_COLUMNS; ++x)
+                sum += Math.abs(a.getPixel(x, y).getRed() - b.getPixel(x, y).getRed());
+        return sum;
+    }
+
+    /**
+     * Asserts that the stripe's image widens with the spread as geometry predicts: 1 + 100·h units,
+     * within 3 columns (the outermost columns see the stripe in too few of their rays).
+     */
+    private static void assertSpreadWidens(String name, DoubleFunction<Scene> scene) {
+        int[] widths = new int[4];
+        double[] spreads = {0, 0.01, 0.02, 0.04};
+        for (int s = 0; s < spreads.length; ++s) {
+            widths[s] = stripeWidth(renderSpread(name + "-" + spreads[s], scene.apply(spreads[s]), 0, 1));
+            double expected = (STRIPE_WIDTH + 2 * SPREAD_DISTANCE * spreads[s]) / COLUMN_WIDTH;
+            assertEquals(expected, widths[s], 3, "TC01: the stripe's width with " + name + " " + spreads[s]);
+        }
+        // ===== Equivalence Partitions Tests =====
+        // TC01 (above): with h 0.01, 0.02, 0.04 the stripe is 10, 15 and 25 columns wide, each within 3
+        // TC02: the width grows with the spread
+        for (int s = 1; s < spreads.length; ++s)
+            assertTrue(widths[s] > widths[s - 1], "TC02: the stripe must widen with " + name + ", got "
+                    + Arrays.toString(widths));
+        // ===== Boundary Values Tests =====
+        // TC11: with h 0 the stripe is sharp: exactly 5 columns
+        assertEquals(5, widths[0], "TC11: the sharp stripe must be 5 columns wide");
+    }
+
+    /**
+     * Asserts that the picture converges to the sharp one as the spread goes to 0: the difference
+     * shrinks with h, vanishes once 50·h is inside the stripe's 0.02 margin, and h = 0 is the sharp
+     * picture bit for bit.
+     */
+    private static void assertSpreadConverges(String name, DoubleFunction<Scene> scene, Scene sharpScene) {
+        ImageWriter sharp = renderSpread(name + "-sharp", sharpScene, 0, 1);
+        double[] spreads = {0.016, 0.008, 0.004, 0.002, 0.001};
+        long[] differences = new long[spreads.length];
+        for (int s = 0; s < spreads.length; ++s)
+            differences[s] = pictureDifference(sharp,
+                    renderSpread(name + "-converge-" + spreads[s], scene.apply(spreads[s]), 0, 1));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the difference from the sharp picture shrinks as h halves from 0.016 to 0.001
+        for (int s = 1; s < spreads.length; ++s)
+            assertTrue(differences[s] < differences[s - 1], "TC01: the difference must shrink with " + name
+                    + ", got " + Arrays.toString(differences));
+        assertTrue(differences[0] > 0, "TC01: h 0.016 must differ from the sharp picture");
+        // ===== Boundary Values Tests =====
+        // TC11: h 0.0002 spreads the rays by 0.01, inside the stripe's margin of 0.02: no difference
+        assertEquals(0, pictureDifference(sharp, renderSpread(name + "-converge-tiny", scene.apply(0.0002), 0, 1)),
+                "TC11: a spread inside the stripe's margin must give the sharp picture");
+        // TC12: h 0 is the sharp picture (a material that never set it) bit for bit
+        assertSameImage(sharp, renderSpread(name + "-zero", scene.apply(0), 0, 1),
+                "TC12: " + name + " 0 must render the sharp picture");
+    }
+
+    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: a glossy mirror widens a stripe's reflection. */
+    @Test
+    void testGlossyReflectionWidth() {
+        assertSpreadWidens("kG", kG -> mirrorScene(new Material().setKr(1).setKg(kG)));
+    }
+
+    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: a glossy mirror converges to the sharp one. */
+    @Test
+    void testGlossyReflectionConvergence() {
+        assertSpreadConverges("kG", kG -> mirrorScene(new Material().setKr(1).setKg(kG)),
+                mirrorScene(new Material().setKr(1)));
+    }
+
+    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: blurry glass widens a stripe seen through it. */
+    @Test
+    void testBlurryTransparencyWidth() {
+        assertSpreadWidens("kB", kB -> paneScene(new Material().setKt(1).setKb(kB)));
+    }
+
+    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: blurry glass converges to clear glass. */
+    @Test
+    void testBlurryTransparencyConvergence() {
+        assertSpreadConverges("kB", kB -> paneScene(new Material().setKt(1).setKb(kB)),
+                paneScene(new Material().setKt(1)));
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#traceRay(Ray)}: glossy and blurry pictures are
+     * reproducible at any number of threads.
+     */
+    @Test
+    void testSpreadPictureDeterministic() {
+        Material both = new Material().setKt(0.6).setKb(0.03).setKr(0.4).setKg(0.05);
+        ImageWriter oneThread = renderSpread("spread-1", paneScene(both), 1, 7);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 1 and 3 threads render the same picture
+        assertSameImage(oneThread, renderSpread("spread-3", paneScene(both), 3, 7),
+                "TC01: 1 and 3 threads differ");
+        // TC02: another seed moves the noise of the blurred stripe's edges
+        assertTrue(pictureDifference(oneThread, renderSpread("spread-other-seed", paneScene(both), 1, 8)) > 0,
+                "TC02: another seed must give other noise");
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#traceRay(Ray)}: no spread ray is traced into the surface.
+     * A floor z = 0 over a bright plane z = −10, a ray grazing the floor at 5.7° (the sky above is
+     * black): with kG 1 (rays up to 45° off the mirror direction) about half of the reflected rays
+     * would go down into the floor and see the bright plane.
+     */
+    @Test
+    void testSpreadRaysStayOnTheirSide() {
+        Ray grazing = new Ray(new Point3D(-100, 0, 10), new Vector(10, 0, -1));
+        Plane bright = new Plane(new Point3D(0, 0, -10), new Vector(0, 0, 1));
+        bright.setEmission(new Color(200, 200, 200));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a glossy mirror floor (kR 1, kG 1) reflects only the black sky: black
+        Scene glossy = new Scene("glossy floor over a bright plane");
+        glossy.geometries.add(floor(new Material().setKr(1).setKg(1), Color.BLACK), bright);
+        RayTracerBasic tracer = new RayTracerBasic(glossy);
+        tracer.setSqrtGlossRays(10);
+        assertColor(Color.BLACK, tracer.traceRay(grazing), "TC01: a reflected ray went into the floor");
+        assertEquals(100, tracer.getSpreadRaysCount(), "TC01: the floor must spread 10 × 10 rays");
+        // TC02: a blurry pane there instead (kT 1, kB 1) shows only the bright plane below: no ray comes back up
+        Scene blurry = new Scene("blurry pane over a bright plane");
+        blurry.geometries.add(floor(new Material().setKt(1).setKb(1), Color.BLACK), bright);
+        assertColor(new Color(200, 200, 200), new RayTracerBasic(blurry).setSqrtGlossRays(10).traceRay(grazing),
+                "TC02: a refracted ray came back up to the black sky");
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#traceRay(Ray)}: the spread rays of a path grow linearly
+     * with the recursion's depth. Between two facing glossy mirrors (kR 1) every ray bounces to the
+     * recursion limit: the first mirror spreads a beam of k² rays, and each of them spreads one ray at
+     * each of the 8 levels below (the last level spreads none): 9·k² rays, not k^18.
+     */
+    @Test
+    void testSpreadRaysCount() {
+        Scene facing = new Scene("facing glossy mirrors");
+        Material glossy = new Material().setKr(1).setKg(0.1);
+        facing.geometries.add(floor(glossy, Color.BLACK),
+                new Plane(new Point3D(0, 0, 200), new Vector(0, 0, -1)).setMaterial(glossy));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a 3 × 3 grid: 9·9 = 81 spread rays for one primary ray
+        RayTracerBasic tracer = new RayTracerBasic(facing);
+        tracer.setSqrtGlossRays(3).traceRay(RAY_DOWN);
+        assertEquals(81, tracer.getSpreadRaysCount(), "TC01: wrong number of spread rays");
+        // ===== Boundary Values Tests =====
+        // TC11: a 1 × 1 grid: one ray per level, 9
+        RayTracerBasic single = new RayTracerBasic(facing);
+        single.setSqrtGlossRays(1).traceRay(RAY_DOWN);
+        assertEquals(9, single.getSpreadRaysCount(), "TC11: wrong number of spread rays");
+        // TC12: sharp mirrors spread no ray
+        Scene sharp = new Scene("facing mirrors");
+        sharp.geometries.add(floor(new Material().setKr(1), Color.BLACK));
+        RayTracerBasic none = new RayTracerBasic(sharp);
+        none.traceRay(RAY_DOWN);
+        assertEquals(0, none.getSpreadRaysCount(), "TC12: a sharp mirror must spread no ray");
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -511,8 +736,8 @@ class RayTracerBasicTest {
 
     /** Asserts two images are identical pixel for pixel. */
     private static void assertSameImage(ImageWriter expected, ImageWriter actual, String message) {
-        for (int y = 0; y < PICTURE_SIZE; ++y)
-            for (int x = 0; x < PICTURE_SIZE; ++x)
+        for (int y = 0; y < expected.getNy(); ++y)
+            for (int x = 0; x < expected.getNx(); ++x)
                 assertEquals(expected.getPixel(x, y), actual.getPixel(x, y), message + " at (" + x + ", " + y + ")");
     }
 

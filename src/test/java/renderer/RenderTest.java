@@ -389,7 +389,8 @@ class RenderTest {
 
     /**
      * Test method for {@link Render#setSoftShadows(boolean)}, {@link Render#setSqrtBeamNum(int)},
-     * {@link Render#setAdaptiveSoftShadows(boolean)} and {@link Render#setSeed(long)}: forwarded to the ray tracer.
+     * {@link Render#setAdaptiveSoftShadows(boolean)}, {@link Render#setSeed(long)} and
+     * {@link Render#setSqrtGlossRays(int)}: forwarded to the ray tracer.
      */
     @Test
     void testForwardingSetters() {
@@ -407,6 +408,8 @@ class RenderTest {
         assertTrue(tracer.isAdaptiveSoftShadows(), "TC01: adaptive soft shadows must be on in the ray tracer");
         assertSame(render, render.setSeed(77), "TC01: setSeed must return the render");
         assertEquals(77, tracer.getSeed(), "TC01: the seed must be 77 in the ray tracer");
+        assertSame(render, render.setSqrtGlossRays(7), "TC01: setSqrtGlossRays must return the render");
+        assertEquals(7, tracer.getSqrtGlossRays(), "TC01: sqrtGlossRays must be 7 in the ray tracer");
         // TC02: turning the flags off again is forwarded too
         render.setSoftShadows(false).setAdaptiveSoftShadows(false);
         assertFalse(tracer.isSoftShadows(), "TC02: soft shadows must be off again in the ray tracer");
@@ -416,6 +419,11 @@ class RenderTest {
                 "TC03: sqrtBeamNum -2 must be rejected");
         assertMessage(e, "sqrtBeamNum", "TC03");
         assertEquals(5, tracer.getSqrtBeamNum(), "TC03: a rejected sqrtBeamNum must leave 5");
+        // TC04: a bad sqrtGlossRays (0) is rejected by the ray tracer through the render
+        e = assertThrows(IllegalArgumentException.class, () -> render.setSqrtGlossRays(0),
+                "TC04: sqrtGlossRays 0 must be rejected");
+        assertMessage(e, "sqrtGlossRays", "TC04");
+        assertEquals(7, tracer.getSqrtGlossRays(), "TC04: a rejected sqrtGlossRays must leave 7");
 
         // ===== Boundary Values Tests =====
         // TC11: before setRayTracer every forwarding setter throws MissingResourceException naming the ray tracer
@@ -429,6 +437,8 @@ class RenderTest {
                 "TC11: setAdaptiveSoftShadows without a ray tracer must fail");
         assertThrows(MissingResourceException.class, () -> empty.setSeed(1),
                 "TC11: setSeed without a ray tracer must fail");
+        assertThrows(MissingResourceException.class, () -> empty.setSqrtGlossRays(2),
+                "TC11: setSqrtGlossRays without a ray tracer must fail");
         // TC12: sqrtBeamNum 1 is forwarded
         render.setSqrtBeamNum(1);
         assertEquals(1, tracer.getSqrtBeamNum(), "TC12: sqrtBeamNum 1 must be forwarded");

@@ -25,6 +25,38 @@ class RenderSettingsTest {
     /** Settings where every component differs from the default. */
     private static final RenderSettings CUSTOM = new RenderSettings(true, true, 4, 3, 7L);
 
+    /**
+     * Test method for {@link RenderSettings#withSqrtGlossRays(int)}, its check, its default and its
+     * {@link RenderSettings#applyTo(Render)}.
+     */
+    @Test
+    void testSqrtGlossRays() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the default is the ray tracer's, 5; the five-count constructor gives it too
+        assertEquals(RayTracerBase.DEFAULT_SQRT_GLOSS_RAYS, RenderSettings.DEFAULT.sqrtGlossRays(),
+                "TC01: sqrtGlossRays must be the ray tracer's default");
+        assertEquals(5, CUSTOM.sqrtGlossRays(), "TC01: the five-count constructor must give 5");
+        // TC02: withSqrtGlossRays(8) changes only sqrtGlossRays, and the other withXxx keep it
+        RenderSettings eight = CUSTOM.withSqrtGlossRays(8);
+        assertEquals(new RenderSettings(true, true, 4, 3, 7L, 8), eight, "TC02: only sqrtGlossRays must change");
+        assertEquals(8, eight.withSoftShadows(false).withAdaptiveSoftShadows(false).withSqrtBeamNum(2)
+                .withAntiAliasing(2).withSeed(1).sqrtGlossRays(), "TC02: the other withXxx must keep sqrtGlossRays");
+        // TC03: applyTo passes it to the ray tracer
+        RayTracerBase tracer = new RayTracerBasic(new Scene("gloss"));
+        eight.applyTo(new Render().setRayTracer(tracer));
+        assertEquals(8, tracer.getSqrtGlossRays(), "TC03: sqrtGlossRays must be 8 in the ray tracer");
+
+        // ===== Boundary Values Tests =====
+        // TC11: 1 and 1000 are accepted
+        assertEquals(1, CUSTOM.withSqrtGlossRays(1).sqrtGlossRays(), "TC11: 1 must be accepted");
+        assertEquals(1000, CUSTOM.withSqrtGlossRays(1000).sqrtGlossRays(), "TC11: 1000 must be accepted");
+        // TC12: 0 and 1001 are rejected naming sqrtGlossRays
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> CUSTOM.withSqrtGlossRays(0),
+                "TC12: 0 must be rejected"), "sqrtGlossRays", "TC12");
+        assertThrows(IllegalArgumentException.class, () -> new RenderSettings(false, false, 9, 1, 0, 1001),
+                "TC12: 1001 must be rejected");
+    }
+
     /** Test method for {@link RenderSettings#DEFAULT}. */
     @Test
     void testDefault() {

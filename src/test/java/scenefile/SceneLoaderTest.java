@@ -278,6 +278,47 @@ class SceneLoaderTest {
         return e;
     }
 
+    /** Test method for {@link SceneLoader#load(Path)}: glossy and blurry materials and the gloss grid. */
+    @Test
+    void testLoadGlossAndBlur() {
+        Picture picture = SceneLoader.load(file("gloss.xml", """
+                <scene>
+                  <render gloss-rays="7"/>
+                  <geometries>
+                    <sphere center="0 0 0" radius="1" kR="0.8" kG="0.05"/>
+                    <plane q0="0 -1 0" normal="0 1 0" kT="0.9" kB="0.2"/>
+                    <sphere center="3 0 0" radius="1" kG="1" kB="0"/>
+                  </geometries>
+                </scene>
+                """));
+        List<Intersectable> bodies = bodies(picture);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the render's gloss-rays 7, the other settings the defaults
+        assertEquals(RenderSettings.DEFAULT.withSqrtGlossRays(7), picture.settings(), "TC01: wrong settings");
+        // TC02: a glossy mirror (kG 0.05) and blurry glass (kB 0.2)
+        assertEquals(0.05, ((Geometry) bodies.get(0)).getMaterial().getKg(), 1e-15, "TC02: wrong kG");
+        assertEquals(0, ((Geometry) bodies.get(0)).getMaterial().getKb(), 0, "TC02: kB must default to 0");
+        assertEquals(0.2, ((Geometry) bodies.get(1)).getMaterial().getKb(), 1e-15, "TC02: wrong kB");
+        assertEquals(0, ((Geometry) bodies.get(1)).getMaterial().getKg(), 0, "TC02: kG must default to 0");
+        // TC03: without a render element the gloss grid is the default 5
+        Picture plain = SceneLoader.load(file("no-gloss.xml", "<scene/>"));
+        assertEquals(5, plain.settings().sqrtGlossRays(), "TC03: the default gloss-rays must be 5");
+
+        // ===== Boundary Values Tests =====
+        // TC11: kG 1 (the largest spread) is read
+        assertEquals(1, ((Geometry) bodies.get(2)).getMaterial().getKg(), 0, "TC11: kG 1 must be read");
+        // TC12: kG just above 1 and a negative kB are errors at their element, naming the factor
+        assertBadFile(file("big-kg.xml", "<scene>\n<geometries>\n<sphere center=\"0 0 0\" radius=\"1\" kG=\"1.5\"/>\n"
+                + "</geometries>\n</scene>\n"), 3, "kG (glossiness) must be at most 1", "TC12");
+        assertBadFile(file("negative-kb.xml", "<scene>\n<geometries>\n<sphere center=\"0 0 0\" radius=\"1\""
+                + " kB=\"-0.1\"/>\n</geometries>\n</scene>\n"), 3, "kB (blurriness) must not be negative", "TC12");
+        // TC13: gloss-rays 0 and 1001 are errors naming the attribute
+        assertBadFile(file("gloss-rays-0.xml", "<scene>\n<render gloss-rays=\"0\"/>\n</scene>\n"), 2, "gloss-rays",
+                "TC13");
+        assertBadFile(file("gloss-rays-1001.xml", "<scene>\n<render gloss-rays=\"1001\"/>\n</scene>\n"), 2,
+                "attribute 'gloss-rays' must be between 1 and 1000", "TC13");
+    }
+
     /** Test method for {@link SceneLoader#load(Path)}: each kind of bad file gives its one-line message. */
     @Test
     void testBadFiles() {

@@ -155,6 +155,8 @@ class SceneWriterTest {
         assertEquals(m.getKt(), n.getKt(), message + ": kT");
         assertEquals(m.getKr(), n.getKr(), message + ": kR");
         assertEquals(m.getShininess(), n.getShininess(), message + ": nShininess");
+        assertEquals(m.getKg(), n.getKg(), message + ": kG");
+        assertEquals(m.getKb(), n.getKb(), message + ": kB");
         if (body instanceof Sphere sphere) {
             assertSame(sphere.getCenter(), ((Sphere) other).getCenter(), message + ": centre");
             assertEquals(sphere.getRadius(), ((Sphere) other).getRadius(), message + ": radius");
@@ -336,6 +338,48 @@ class SceneWriterTest {
         Path deep = FOLDER.resolve("new-folder").resolve("deeper").resolve("everything.xml");
         SceneWriter.write(picture, deep);
         assertTrue(Files.isRegularFile(deep), "TC12: the file in new folders was not written");
+    }
+
+    /**
+     * Test method for {@link SceneWriter#write(Picture, Path)} and {@link SceneLoader#load(Path)}: glossy
+     * and blurry materials and the gloss grid, written and loaded, have the same values and render the
+     * same pixels.
+     */
+    @Test
+    void testRoundTripGlossAndBlur() {
+        Scene scene = new Scene("gloss").setBackground(new Color(40, 60, 90));
+        scene.geometries.add(
+                new Plane(new Point3D(0, -40, 0), new Vector(0, 1, 0)).setEmission(new Color(30, 30, 30))
+                        .setMaterial(new Material().setKd(0.4).setKr(0.5).setKg(0.07)),
+                new Polygon(new Point3D(-30, -40, 20), new Point3D(30, -40, 20), new Point3D(30, 40, 20),
+                        new Point3D(-30, 40, 20)).setMaterial(new Material().setKt(0.8).setKb(0.03)),
+                new Sphere(new Point3D(0, 0, -40), 25).setEmission(new Color(150, 40, 20)));
+        scene.lights.add(new DirectionalLight(new Color(200, 200, 200), new Vector(1, -1, -1)));
+        Camera camera = new Camera(new Point3D(0, 10, 300), new Vector(0, 0, -1), new Vector(0, 1, 0))
+                .setVpSize(150, 150).setVpDistance(300);
+        Picture picture = new Picture("gloss", 40, 40, scene, camera, 0, RenderSettings.DEFAULT.withSqrtGlossRays(3));
+        Path file = FOLDER.resolve("gloss.xml");
+        SceneWriter.write(picture, file);
+        Picture loaded = SceneLoader.load(file);
+        String xml = SceneWriter.toXml(picture);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the loaded picture has exactly the values of the Java one, kG, kB and gloss-rays included
+        assertSamePicture(picture, loaded, "TC01");
+        assertEquals(3, loaded.settings().sqrtGlossRays(), "TC01: wrong gloss-rays");
+        // TC02: the text carries kG="0.07", kB="0.03" and gloss-rays="3"
+        for (String attribute : List.of("kG=\"0.07\"", "kB=\"0.03\"", "gloss-rays=\"3\""))
+            assertTrue(xml.contains(attribute), "TC02: the text lacks " + attribute + ":\n" + xml);
+        // TC03: the loaded picture renders exactly the pixels of the Java one
+        assertEquals(0, differentPixels(render(picture, "gloss-java"), render(loaded, "gloss-file")),
+                "TC03: the loaded picture renders other pixels");
+
+        // ===== Boundary Values Tests =====
+        // TC11: kG and kB 0 and the default gloss-rays are not written (the schema's defaults)
+        String plain = SceneWriter.toXml(picture.withSettings(RenderSettings.DEFAULT));
+        assertFalse(plain.contains("gloss-rays"), "TC11: the default gloss-rays must not be written");
+        assertEquals(1, plain.split("kG=", -1).length - 1, "TC11: only the glossy floor may have a kG");
+        assertEquals(1, plain.split("kB=", -1).length - 1, "TC11: only the blurry pane may have a kB");
     }
 
     /**
