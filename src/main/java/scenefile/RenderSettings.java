@@ -5,22 +5,40 @@ import renderer.RayTracerBase;
 import renderer.Render;
 
 /**
- * How a picture is rendered: soft shadows, shadow rays per light, anti-aliasing and the random seed.
+ * How a picture is rendered: soft shadows, shadow rays per light, anti-aliasing, the random seed and
+ * adaptive super-sampling.
  *
- * @param softShadows         whether lights with an area cast soft shadows
- * @param adaptiveSoftShadows whether a light's square is sampled adaptively (outline first)
- * @param sqrtBeamNum         the number of shadow-ray cells along each side of a light's square, 1 to 1000
- * @param antiAliasing        the number of rays along each side of a pixel, 1 to 1000
- * @param seed                the seed of the per-pixel random streams
+ * @param softShadows           whether lights with an area cast soft shadows
+ * @param adaptiveSoftShadows   whether a light's square is sampled adaptively (outline first)
+ * @param sqrtBeamNum           the number of shadow-ray cells along each side of a light's square, 1 to 1000
+ * @param antiAliasing          the number of rays along each side of a pixel, 1 to 1000
+ * @param seed                  the seed of the per-pixel random streams
+ * @param adaptiveSuperSampling whether pixels are super-sampled adaptively (corners and centre first)
  */
 public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, int sqrtBeamNum, int antiAliasing,
-                             long seed) {
-    /** Hard shadows, 9 × 9 cells, one ray per pixel, the default seed. */
+                             long seed, boolean adaptiveSuperSampling) {
+    /** Hard shadows, 9 × 9 cells, one ray per pixel, the default seed, no adaptive super-sampling. */
     public static final RenderSettings DEFAULT = new RenderSettings(false, false,
-            RayTracerBase.DEFAULT_SQRT_BEAM_NUM, 1, RayTracerBase.DEFAULT_SEED);
+            RayTracerBase.DEFAULT_SQRT_BEAM_NUM, 1, RayTracerBase.DEFAULT_SEED, false);
 
     /**
      * Checks the counts.
+     *
+     * @param softShadows           whether lights with an area cast soft shadows
+     * @param adaptiveSoftShadows   whether a light's square is sampled adaptively
+     * @param sqrtBeamNum           the number of shadow-ray cells along each side of a light's square, 1 to 1000
+     * @param antiAliasing          the number of rays along each side of a pixel, 1 to 1000
+     * @param seed                  the seed of the per-pixel random streams
+     * @param adaptiveSuperSampling whether pixels are super-sampled adaptively
+     * @throws IllegalArgumentException when a count is below 1 or above 1000
+     */
+    public RenderSettings {
+        JitteredGrid.requireSqrtSamples(sqrtBeamNum, "sqrtBeamNum");
+        JitteredGrid.requireSqrtSamples(antiAliasing, "anti-aliasing (rays along each side of a pixel)");
+    }
+
+    /**
+     * Settings without adaptive super-sampling (the settings as they were before it).
      *
      * @param softShadows         whether lights with an area cast soft shadows
      * @param adaptiveSoftShadows whether a light's square is sampled adaptively
@@ -29,9 +47,9 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @param seed                the seed of the per-pixel random streams
      * @throws IllegalArgumentException when a count is below 1 or above 1000
      */
-    public RenderSettings {
-        JitteredGrid.requireSqrtSamples(sqrtBeamNum, "sqrtBeamNum");
-        JitteredGrid.requireSqrtSamples(antiAliasing, "anti-aliasing (rays along each side of a pixel)");
+    public RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, int sqrtBeamNum, int antiAliasing,
+                          long seed) {
+        this(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed, false);
     }
 
     /**
@@ -41,7 +59,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with soft shadows on or off
      */
     public RenderSettings withSoftShadows(boolean on) {
-        return new RenderSettings(on, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed);
+        return new RenderSettings(on, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed, adaptiveSuperSampling);
     }
 
     /**
@@ -51,7 +69,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with adaptive soft shadows on or off
      */
     public RenderSettings withAdaptiveSoftShadows(boolean on) {
-        return new RenderSettings(softShadows, on, sqrtBeamNum, antiAliasing, seed);
+        return new RenderSettings(softShadows, on, sqrtBeamNum, antiAliasing, seed, adaptiveSuperSampling);
     }
 
     /**
@@ -61,7 +79,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with n × n + 1 shadow rays per light
      */
     public RenderSettings withSqrtBeamNum(int n) {
-        return new RenderSettings(softShadows, adaptiveSoftShadows, n, antiAliasing, seed);
+        return new RenderSettings(softShadows, adaptiveSoftShadows, n, antiAliasing, seed, adaptiveSuperSampling);
     }
 
     /**
@@ -71,7 +89,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with k × k rays per pixel
      */
     public RenderSettings withAntiAliasing(int k) {
-        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, k, seed);
+        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, k, seed, adaptiveSuperSampling);
     }
 
     /**
@@ -81,7 +99,18 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      * @return these settings with another seed
      */
     public RenderSettings withSeed(long newSeed) {
-        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, newSeed);
+        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, newSeed,
+                adaptiveSuperSampling);
+    }
+
+    /**
+     * Turns adaptive super-sampling of pixels on or off.
+     *
+     * @param on true for adaptive super-sampling
+     * @return these settings with adaptive super-sampling on or off
+     */
+    public RenderSettings withAdaptiveSuperSampling(boolean on) {
+        return new RenderSettings(softShadows, adaptiveSoftShadows, sqrtBeamNum, antiAliasing, seed, on);
     }
 
     /**
@@ -92,6 +121,7 @@ public record RenderSettings(boolean softShadows, boolean adaptiveSoftShadows, i
      */
     public Render applyTo(Render render) {
         return render.setSoftShadows(softShadows).setAdaptiveSoftShadows(adaptiveSoftShadows)
-                .setSqrtBeamNum(sqrtBeamNum).setAntiAliasing(antiAliasing).setSeed(seed);
+                .setSqrtBeamNum(sqrtBeamNum).setAntiAliasing(antiAliasing).setSeed(seed)
+                .setAdaptiveSuperSampling(adaptiveSuperSampling);
     }
 }

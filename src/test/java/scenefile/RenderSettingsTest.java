@@ -160,4 +160,31 @@ class RenderSettingsTest {
         assertEquals(1, render1.getAntiAliasing(), "TC12: anti-aliasing must be back to 1");
         assertEquals(0L, tracer1.getSeed(), "TC12: the seed must be 0");
     }
+
+    /**
+     * Test method for {@link RenderSettings#withAdaptiveSuperSampling(boolean)}, the five-argument constructor and
+     * {@link RenderSettings#applyTo(Render)} with adaptive super-sampling.
+     */
+    @Test
+    void testAdaptiveSuperSampling() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: off by default; withAdaptiveSuperSampling(true) turns it on and keeps the rest (custom settings)
+        assertFalse(RenderSettings.DEFAULT.adaptiveSuperSampling(), "TC01: adaptive super-sampling must be off");
+        RenderSettings adaptive = CUSTOM.withAdaptiveSuperSampling(true);
+        assertEquals(new RenderSettings(true, true, 4, 3, 7L, true), adaptive, "TC01: only the flag must change");
+        // TC02: the other with-methods keep it on
+        assertTrue(adaptive.withSoftShadows(false).withAdaptiveSoftShadows(false).withSqrtBeamNum(2)
+                .withAntiAliasing(5).withSeed(1).adaptiveSuperSampling(), "TC02: the flag must be kept");
+        // TC03: applied to a render, and turned off again by DEFAULT
+        Render render = new Render().setRayTracer(new RayTracerBasic(new Scene("adaptive")));
+        adaptive.applyTo(render);
+        assertTrue(render.isAdaptiveSuperSampling(), "TC03: adaptive super-sampling must be on in the render");
+        RenderSettings.DEFAULT.applyTo(render);
+        assertFalse(render.isAdaptiveSuperSampling(), "TC03: adaptive super-sampling must be off again");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the five-argument constructor is the six-argument one with adaptive super-sampling off
+        assertEquals(new RenderSettings(true, true, 4, 3, 7L, false), CUSTOM, "TC11: five arguments mean off");
+        assertEquals(CUSTOM, adaptive.withAdaptiveSuperSampling(false), "TC11: turned off again");
+    }
 }
