@@ -166,11 +166,13 @@ public class Render {
      * Turns adaptive super-sampling on or off (off by default). A pixel's four corners and its centre
      * are traced first; when the centre's colour differs from a corner's by more than
      * {@link #ADAPTIVE_THRESHOLD} levels in a channel, the pixel is divided into four squares that are
-     * sampled the same way, recursively, down to squares no smaller than the anti-aliasing grid's cells
-     * (so k × k anti-aliasing divides at most log₂ k times); the colour of a square that is not divided
-     * is the average of its five points, that of a divided one the average of its quarters. Points
-     * shared by squares of a pixel are traced once. Flat regions take 5 rays a pixel instead of k²;
-     * with anti-aliasing off (k = 1) it is one ray through the centre, as without it.
+     * sampled the same way, recursively, down to the anti-aliasing grid's resolution: the smallest squares
+     * are two of its cells wide, so that with their centres the points are 1/k of the pixel apart, as the
+     * grid's are (k × k anti-aliasing divides at most log₂ k − 1 times). The colour of a square that is not
+     * divided is the average of its five points, that of a divided one the average of its quarters. Points
+     * shared by squares of a pixel are traced once, so a pixel takes at most (k/2 + 1)² + (k/2)² rays
+     * (about half of k² for k a power of 2, never more than k² for k ≥ 3), and flat regions take 5 a
+     * pixel instead of k². With anti-aliasing off (k = 1) it is one ray through the centre, as without it.
      * <p>
      * The points are a regular lattice, not jittered; a pixel's corners are traced again by its
      * neighbours rather than shared with them, so that each pixel depends on nothing but itself (its
@@ -390,8 +392,11 @@ public class Render {
             private final ThreadState state;
             private final int j;
             private final int i;
-            /** How many times the pixel may be halved: squares stay no smaller than the anti-aliasing cells. */
-            private final int maxDepth = 31 - Integer.numberOfLeadingZeros(pixelGrid.getSqrtSamples());
+            /**
+             * How many times the pixel may be halved: the smallest squares are at least two anti-aliasing cells
+             * wide, so that with their centres the points are no closer than the cells (1/k apart).
+             */
+            private final int maxDepth = Math.max(0, 30 - Integer.numberOfLeadingZeros(pixelGrid.getSqrtSamples()));
             /** The number of lattice intervals along a side. */
             private final int side = 2 << maxDepth;
 
