@@ -6,6 +6,9 @@
  * <p>
  * Soft shadows, adaptive soft shadows and anti-aliasing all take their random points from one sampler,
  * {@link renderer.JitteredGrid}, fed by a random stream per pixel, so the same scene and settings give the
- * same picture bit for bit whatever the number of threads.
+ * same picture bit for bit whatever the number of threads. So does depth of field (the camera's aperture,
+ * {@link renderer.Camera#setApertureSize}); adaptive super-sampling
+ * ({@link renderer.Render#setAdaptiveSuperSampling}) traces a pixel's corners and centre first and divides
+ * only where they differ.
  */
 package renderer;
