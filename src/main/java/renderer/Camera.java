@@ -12,14 +12,14 @@ import static primitives.Util.requireNonNull;
 import static primitives.Util.requirePositive;
 
 /**
- * A pinhole camera: a position {@code p0}, an orthonormal frame {@code vTo}, {@code vUp},
+ * A camera: a position {@code p0}, an orthonormal frame {@code vTo}, {@code vUp},
  * {@code vRight = vTo × vUp}, and a view plane at a distance in front of it through which rays
  * are cast to the pixels of the image.
  * <p>
  * Depth of field: with an aperture (a square of edge {@link #setApertureSize}, centred on {@code p0}
  * in the {@code vRight}/{@code vUp} plane), the rays of a pixel start at jittered points of the
- * aperture ({@link #setSqrtApertureRays} × as many of them) and all aim at the point where the pixel's
- * pinhole ray meets the focal plane, at {@link #setFocalDistance} along {@code vTo}: what lies on that
+ * aperture (n × n of them, n set by {@link #setSqrtApertureRays}) and all aim at the point where the
+ * pixel's pinhole ray meets the focal plane, at {@link #setFocalDistance} along {@code vTo}: what lies on that
  * plane is sharp, the rest blurs in proportion to its distance from it. Without a focal distance the
  * view plane is in focus. An aperture of 0, the default, is the pinhole camera.
  */
