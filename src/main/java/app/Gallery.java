@@ -63,7 +63,9 @@ public final class Gallery {
                 twoSpheres(),
                 twoSpheresOnMirrors(),
                 trianglesTransparentSphere(),
-                glossyFloorFrostedPane());
+                glossyFloorFrostedPane(),
+                depthOfField(),
+                adaptiveSuperSampling());
     }
 
     /**
@@ -221,6 +223,60 @@ public final class Gallery {
         scene.lights.add(new SpotLight(new Color(1020, 400, 400), new Point3D(-750, -750, -150), new Vector(-1, -1, -4))
                 .setKl(0.00001).setKq(0.000005));
         return new Picture("reflectionTwoSpheresMirrored", 500, 500, scene, frontCamera(10000, 2500));
+    }
+
+    /**
+     * Depth of field: a row of spheres receding over a chequered floor, the camera focused on the middle one
+     * (aperture 8, 5 × 5 rays through it for each pixel).
+     */
+    private static Picture depthOfField() {
+        Camera camera = new Camera(new Point3D(0, 40, 300), new Vector(0, -0.15, -1), new Vector(0, 1, -0.15))
+                .setVpSize(240, 160).setVpDistance(300).setApertureSize(8).setFocalDistance(442)
+                .setSqrtApertureRays(5);
+        return new Picture("depthOfField", 480, 320, spheresOnChequers("depth of field", 7), camera);
+    }
+
+    /**
+     * Adaptive super-sampling: chequers receding into the distance, where they alias worst, and spheres;
+     * 8 × 8 anti-aliasing, sampled adaptively.
+     */
+    private static Picture adaptiveSuperSampling() {
+        Camera camera = new Camera(new Point3D(0, 30, 400), new Vector(0, -0.1, -1), new Vector(0, 1, -0.1))
+                .setVpSize(240, 160).setVpDistance(300);
+        return new Picture("adaptiveSuperSampling", 480, 320, spheresOnChequers("adaptive super-sampling", 5),
+                camera, 0, RenderSettings.DEFAULT.withAntiAliasing(8).withAdaptiveSuperSampling(true));
+    }
+
+    /**
+     * A row of coloured spheres of radius 20 on a floor of light and dark square tiles at y = −30, 16 tiles
+     * across and 40 deep, under a point light and a dim directional light.
+     *
+     * @param name    the scene's name
+     * @param spheres how many spheres, 80 apart in depth from z = 100
+     */
+    private static Scene spheresOnChequers(String name, int spheres) {
+        Scene scene = new Scene(name).setAmbientLight(new AmbientLight(WHITE, 0.08))
+                .setBackground(new Color(20, 25, 45));
+        Material light = new Material().setKd(0.7).setKs(0.2).setShininess(20);
+        Material dark = new Material().setKd(0.08).setKs(0.2).setShininess(20);
+        for (int row = 0; row < 40; ++row)
+            for (int column = 0; column < 16; ++column) {
+                double x = -320 + 40 * column;
+                double z = 400 - 40 * row;
+                scene.geometries.add(new Polygon(new Point3D(x, -30, z), new Point3D(x + 40, -30, z),
+                        new Point3D(x + 40, -30, z - 40), new Point3D(x, -30, z - 40))
+                        .setMaterial((row + column) % 2 == 0 ? light : dark));
+            }
+        Color[] colours = {new Color(200, 40, 40), new Color(220, 140, 30), new Color(200, 200, 40),
+                new Color(40, 180, 60), new Color(40, 120, 220), new Color(110, 60, 200), new Color(200, 60, 160)};
+        for (int k = 0; k < spheres; ++k)
+            scene.geometries.add(new Sphere(new Point3D(50 - 17 * k, -10, 100 - 80 * k), 20)
+                    .setEmission(colours[k % colours.length].scale(0.35))
+                    .setMaterial(new Material().setKd(0.4).setKs(0.4).setShininess(60)));
+        scene.lights.add(new PointLight(new Color(500, 480, 440), new Point3D(-250, 250, 150)).setKl(1E-3)
+                .setKq(2E-6));
+        scene.lights.add(new DirectionalLight(new Color(50, 50, 70), new Vector(1, -1, -1)));
+        return scene;
     }
 
     /** Two triangles under a transparent sphere: the sphere's shadow is light. */

@@ -26,6 +26,8 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import primitives.Util;
+import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.JitteredGrid;
 import renderer.Preview;
@@ -114,6 +116,26 @@ public class RenderCommand implements Callable<Integer> {
     @Option(names = "--seed", paramLabel = "S",
             description = "the seed of the random sampling (default: the scene file's)")
     private Long seed;
+
+    @Option(names = "--adaptive-aa", negatable = true,
+            description = "adaptive super-sampling: corners and centre of each pixel first, divided where they"
+                    + " differ, down to the --aa grid (default: the scene file's)")
+    private Boolean adaptiveSuperSampling;
+
+    @Option(names = "--aperture", paramLabel = "A",
+            description = "depth of field: the edge of the camera's square aperture, 0 for a pinhole camera"
+                    + " (default: the scene file's)")
+    private Double aperture;
+
+    @Option(names = "--focus", paramLabel = "F",
+            description = "depth of field: the distance along the camera's direction of the plane in focus"
+                    + " (default: the scene file's, or its view plane's)")
+    private Double focus;
+
+    @Option(names = "--aperture-rays", paramLabel = "N",
+            description = "depth of field: N x N rays through the aperture per point of a pixel (default: the"
+                    + " scene file's)")
+    private Integer apertureRays;
 
     @Option(names = "--threads", paramLabel = "T", defaultValue = "0",
             description = "the number of rendering threads, 0 for one per core (default: ${DEFAULT-VALUE})")
@@ -317,6 +339,12 @@ public class RenderCommand implements Callable<Integer> {
             requireGrid("--aa", antiAliasing);
         if (glossRays != null)
             requireGrid("--gloss-rays", glossRays);
+        if (apertureRays != null)
+            requireGrid("--aperture-rays", apertureRays);
+        if (aperture != null)
+            requireValid(() -> Util.requireNonNegative(aperture, "--aperture"));
+        if (focus != null)
+            requireValid(() -> Util.requirePositive(focus, "--focus"));
         if (threads < 0 || threads > MAX_THREADS)
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--threads must be 0 (one per core) to " + MAX_THREADS + ", got " + threads);
@@ -329,8 +357,13 @@ public class RenderCommand implements Callable<Integer> {
     }
 
     private void requireGrid(String option, int value) {
+        requireValid(() -> JitteredGrid.requireSqrtSamples(value, option));
+    }
+
+    /** Runs a check of an option's value; what it rejects is a bad argument. */
+    private void requireValid(Runnable check) {
         try {
-            JitteredGrid.requireSqrtSamples(value, option);
+            check.run();
         } catch (IllegalArgumentException e) {
             throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
@@ -357,6 +390,9 @@ public class RenderCommand implements Callable<Integer> {
             settings = settings.withSeed(seed);
         if (glossRays != null)
             settings = settings.withSqrtGlossRays(glossRays);
+        if (adaptiveSuperSampling != null)
+            settings = settings.withAdaptiveSuperSampling(adaptiveSuperSampling);
+        adjustLens(picture.camera());
         int w = picture.nX();
         int h = picture.nY();
         if (width != null && height != null) {
@@ -374,6 +410,16 @@ public class RenderCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new CommandLine.ParameterException(spec.commandLine(), "--width/--height: " + e.getMessage());
         }
+    }
+
+    /** Gives the camera the depth of field options that were given (checked already). */
+    private void adjustLens(Camera camera) {
+        if (aperture != null)
+            camera.setApertureSize(aperture);
+        if (focus != null)
+            camera.setFocalDistance(focus);
+        if (apertureRays != null)
+            camera.setSqrtApertureRays(apertureRays);
     }
 
     /**
@@ -463,6 +509,8 @@ public class RenderCommand implements Callable<Integer> {
         private boolean started;
         /** Whether the render failed: the bar shows nothing more, the failure's line is alone. */
         private boolean muted;
+        /** Whether the bar is done: a redraw still under way on the library's thread then shows nothing. */
+        private boolean closed;
 
         WriterConsumer(PrintWriter writer, boolean terminal) {
             this.writer = writer;
@@ -511,7 +559,7 @@ public class RenderCommand implements Callable<Integer> {
 
         @Override
         public synchronized void accept(String rendered) {
-            if (muted || !terminal && !started)
+            if (muted || closed || !terminal && !started)
                 return;
             if (terminal)
                 writer.print('\r' + rendered);
@@ -523,8 +571,9 @@ public class RenderCommand implements Callable<Integer> {
 
         @Override
         public synchronized void close() {
-            if (terminal && !muted)
+            if (terminal && !muted && !closed)
                 writer.println();
+            closed = true;
             writer.flush();
         }
     }

@@ -7,15 +7,26 @@ import primitives.Ray;
 import primitives.Vector;
 
 import static primitives.Util.isZero;
+import static primitives.Util.requireNonNegative;
 import static primitives.Util.requireNonNull;
 import static primitives.Util.requirePositive;
 
 /**
- * A pinhole camera: a position {@code p0}, an orthonormal frame {@code vTo}, {@code vUp},
+ * A camera: a position {@code p0}, an orthonormal frame {@code vTo}, {@code vUp},
  * {@code vRight = vTo × vUp}, and a view plane at a distance in front of it through which rays
  * are cast to the pixels of the image.
+ * <p>
+ * Depth of field: with an aperture (a square of edge {@link #setApertureSize}, centred on {@code p0}
+ * in the {@code vRight}/{@code vUp} plane), the rays of a pixel start at jittered points of the
+ * aperture (n × n of them, n set by {@link #setSqrtApertureRays}) and all aim at the point where the
+ * pixel's pinhole ray meets the focal plane, at {@link #setFocalDistance} along {@code vTo}: what lies on that
+ * plane is sharp, the rest blurs in proportion to its distance from it. Without a focal distance the
+ * view plane is in focus. An aperture of 0, the default, is the pinhole camera.
  */
 public class Camera {
+    /** The default square root of the number of rays through the aperture: 9 × 9 = 81, as for shadow rays. */
+    public static final int DEFAULT_SQRT_APERTURE_RAYS = 9;
+
     private final Point3D p0;
     private final Vector vTo;
     private final Vector vUp;
@@ -23,6 +34,9 @@ public class Camera {
     private double width;
     private double height;
     private double distance;
+    private double focalDistance;
+    private double apertureSize;
+    private JitteredGrid apertureGrid = new JitteredGrid(DEFAULT_SQRT_APERTURE_RAYS);
 
     /**
      * Creates a camera; it keeps unit copies of the direction vectors.
@@ -94,6 +108,46 @@ public class Camera {
         return setVpDistance(distance);
     }
 
+    /**
+     * Sets the distance from the camera to the plane in focus, along {@code vTo} (depth of field).
+     *
+     * @param focalDistance the distance, positive; until set, the view plane's distance
+     * @return this camera
+     * @throws IllegalArgumentException when the distance is not positive or not finite
+     */
+    public Camera setFocalDistance(double focalDistance) {
+        this.focalDistance = requirePositive(focalDistance, "focal distance");
+        return this;
+    }
+
+    /**
+     * Sets the edge of the camera's square aperture (depth of field): the wider, the more what lies off
+     * the focal plane blurs.
+     *
+     * @param apertureSize the edge, 0 (the default: a pinhole camera, everything sharp) or more
+     * @return this camera
+     * @throws IllegalArgumentException when the size is negative or not finite
+     */
+    public Camera setApertureSize(double apertureSize) {
+        this.apertureSize = requireNonNegative(apertureSize, "aperture size");
+        return this;
+    }
+
+    /**
+     * Sets the number of rays through the aperture for each point of a pixel: the aperture's square is
+     * divided into n × n cells, and one ray starts at a jittered point of each.
+     *
+     * @param sqrtApertureRays n, 1 to {@link JitteredGrid#MAX_SQRT_SAMPLES} ({@link #DEFAULT_SQRT_APERTURE_RAYS}
+     *                         by default)
+     * @return this camera
+     * @throws IllegalArgumentException when n is less than 1 or more than {@link JitteredGrid#MAX_SQRT_SAMPLES}
+     */
+    public Camera setSqrtApertureRays(int sqrtApertureRays) {
+        JitteredGrid.requireSqrtSamples(sqrtApertureRays, "sqrtApertureRays (aperture rays along each side)");
+        this.apertureGrid = new JitteredGrid(sqrtApertureRays);
+        return this;
+    }
+
     /** {@return the position} */
     public Point3D getP0() {
         return p0;
@@ -129,6 +183,31 @@ public class Camera {
         return distance;
     }
 
+    /** {@return the distance to the plane in focus (the view plane's distance until set)} */
+    public double getFocalDistance() {
+        return focalDistance == 0 ? distance : focalDistance;
+    }
+
+    /** {@return the edge of the square aperture (0: a pinhole camera)} */
+    public double getApertureSize() {
+        return apertureSize;
+    }
+
+    /** {@return whether the camera has an aperture, and so depth of field} */
+    public boolean hasAperture() {
+        return apertureSize > 0;
+    }
+
+    /** {@return the square root of the number of rays through the aperture per point of a pixel} */
+    public int getSqrtApertureRays() {
+        return apertureGrid.getSqrtSamples();
+    }
+
+    /** {@return the grid the rays' starting points on the aperture come from} */
+    public JitteredGrid getApertureGrid() {
+        return apertureGrid;
+    }
+
     /**
      * Casts the ray from the camera through the centre of a pixel.
      *
@@ -159,6 +238,42 @@ public class Camera {
      * @throws MissingResourceException when the view plane size or distance was not set
      */
     public Ray constructRayThroughPixel(int nX, int nY, int j, int i, double dx, double dy) {
+        requirePixelPoint(nX, nY, j, i, dx, dy);
+        return new Ray(p0, direction(distance, xJ(nX, j, dx), yI(nY, i, dy)));
+    }
+
+    /**
+     * Casts a ray of depth of field: from a point of the aperture to the point where the pinhole ray
+     * through a point inside a pixel meets the focal plane.
+     *
+     * @param nX the number of columns in the image
+     * @param nY the number of rows in the image
+     * @param j  the pixel's column, 0 at the left
+     * @param i  the pixel's row, 0 at the top
+     * @param dx the point's offset from the pixel's left edge, as a fraction of its width (0..1)
+     * @param dy the point's offset from the pixel's top edge, as a fraction of its height (0..1)
+     * @param u  the ray's start along the aperture's edge in the vRight direction, as a fraction of it (0..1)
+     * @param v  the ray's start along the aperture's edge in the vUp direction, as a fraction of it (0..1)
+     * @return the ray from the aperture point through the focal point
+     * @throws IllegalArgumentException for a non-positive image size, a pixel outside it, or an offset
+     *                                  outside 0..1
+     * @throws MissingResourceException when the view plane size or distance was not set
+     */
+    public Ray constructRayThroughAperture(int nX, int nY, int j, int i, double dx, double dy, double u, double v) {
+        requirePixelPoint(nX, nY, j, i, dx, dy);
+        if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1))
+            throw new IllegalArgumentException("aperture offset (" + u + ", " + v + ") is outside 0..1");
+        double scale = getFocalDistance() / distance;
+        double right = (u - 0.5) * apertureSize;
+        double up = (v - 0.5) * apertureSize;
+        Point3D start = new Point3D(p0.getX() + right * vRight.getX() + up * vUp.getX(),
+                p0.getY() + right * vRight.getY() + up * vUp.getY(),
+                p0.getZ() + right * vRight.getZ() + up * vUp.getZ());
+        return new Ray(start, direction(distance * scale, xJ(nX, j, dx) * scale - right,
+                yI(nY, i, dy) * scale - up));
+    }
+
+    private void requirePixelPoint(int nX, int nY, int j, int i, double dx, double dy) {
         if (nX <= 0 || nY <= 0)
             throw new IllegalArgumentException("image size must be positive, got " + nX + "x" + nY);
         if (j < 0 || j >= nX || i < 0 || i >= nY)
@@ -169,11 +284,22 @@ public class Camera {
             throw new MissingResourceException("camera view plane size is not set", "Camera", "vpSize");
         if (distance == 0)
             throw new MissingResourceException("camera view plane distance is not set", "Camera", "vpDistance");
-        double xJ = (j + dx - nX / 2.0) * width / nX;
-        double yI = -(i + dy - nY / 2.0) * height / nY;
-        return new Ray(p0, new Vector(
-                distance * vTo.getX() + xJ * vRight.getX() + yI * vUp.getX(),
-                distance * vTo.getY() + xJ * vRight.getY() + yI * vUp.getY(),
-                distance * vTo.getZ() + xJ * vRight.getZ() + yI * vUp.getZ()));
+    }
+
+    /** The horizontal offset on the view plane of a point in column j, rightwards from the centre. */
+    private double xJ(int nX, int j, double dx) {
+        return (j + dx - nX / 2.0) * width / nX;
+    }
+
+    /** The vertical offset on the view plane of a point in row i, upwards from the centre. */
+    private double yI(int nY, int i, double dy) {
+        return -(i + dy - nY / 2.0) * height / nY;
+    }
+
+    /** The vector forward · vTo + right · vRight + up · vUp. */
+    private Vector direction(double forward, double right, double up) {
+        return new Vector(forward * vTo.getX() + right * vRight.getX() + up * vUp.getX(),
+                forward * vTo.getY() + right * vRight.getY() + up * vUp.getY(),
+                forward * vTo.getZ() + right * vRight.getZ() + up * vUp.getZ());
     }
 }

@@ -14,8 +14,21 @@ import static primitives.Util.requireNonNull;
  * colour to the image. Pixels are rendered in square tiles by several threads (all cores by
  * default); each pixel's colour depends on nothing but the pixel, so the picture is the same bit
  * for bit whatever the number of threads.
+ * <p>
+ * With anti-aliasing, a pixel is the average of k × k jittered rays, or, with adaptive super-sampling,
+ * of as few rays as its content needs. A camera with an aperture (depth of field) turns every ray
+ * through a point of the pixel into n × n rays through its aperture, all aimed at the same point of
+ * the focal plane, and the colour seen through the pixel's point is their average: k² · n² rays per
+ * pixel in all (the aperture's points drawn anew for each point of the pixel).
  */
 public class Render {
+    /**
+     * How much, in colour levels (0 to 255 on each of red, green and blue), the colour seen through a
+     * square's centre may differ from that seen through one of its corners before adaptive
+     * super-sampling divides the square.
+     */
+    public static final double ADAPTIVE_THRESHOLD = 4;
+
     /** The edge of a square tile of pixels handed to a thread at a time. */
     private static final int TILE = 16;
     /** How often, in milliseconds, the debug print reports progress. */
@@ -27,6 +40,7 @@ public class Render {
     private int threadsCount = Runtime.getRuntime().availableProcessors();
     private boolean debugPrint;
     private JitteredGrid pixelGrid;
+    private boolean adaptiveSuperSampling;
     private LongConsumer progressListener;
 
     /** Creates a render with nothing set yet: set an image writer, a camera and a ray tracer before rendering. */
@@ -160,6 +174,36 @@ public class Render {
     /** {@return k, the square root of the number of rays per pixel} */
     public int getAntiAliasing() {
         return pixelGrid == null ? 1 : pixelGrid.getSqrtSamples();
+    }
+
+    /**
+     * Turns adaptive super-sampling on or off (off by default). A pixel's four corners and its centre
+     * are traced first; when the centre's colour differs from a corner's by more than
+     * {@link #ADAPTIVE_THRESHOLD} levels in a channel, the pixel is divided into four squares that are
+     * sampled the same way, recursively, down to the anti-aliasing grid's resolution: the smallest squares
+     * are two of its cells wide, so that with their centres the points are 1/k of the pixel apart, as the
+     * grid's are (k × k anti-aliasing divides at most log₂ k − 1 times). The colour of a square that is not
+     * divided is the average of its five points, that of a divided one the average of its quarters. Points
+     * shared by squares of a pixel are traced once, so a pixel takes at most (k/2 + 1)² + (k/2)² rays
+     * (about half of k² for k a power of 2, never more than k² for k ≥ 3), and flat regions take 5 a
+     * pixel instead of k². With anti-aliasing off (k = 1) it is one ray through the centre, as without it.
+     * <p>
+     * The points are a regular lattice, not jittered; a pixel's corners are traced again by its
+     * neighbours rather than shared with them, so that each pixel depends on nothing but itself (its
+     * shadows and aperture rays draw from the pixel's own random stream) and the picture stays the same
+     * whatever the number of threads and the order of the tiles.
+     *
+     * @param adaptiveSuperSampling true for adaptive super-sampling
+     * @return this render
+     */
+    public Render setAdaptiveSuperSampling(boolean adaptiveSuperSampling) {
+        this.adaptiveSuperSampling = adaptiveSuperSampling;
+        return this;
+    }
+
+    /** {@return whether adaptive super-sampling is on} */
+    public boolean isAdaptiveSuperSampling() {
+        return adaptiveSuperSampling;
     }
 
     /**
@@ -311,28 +355,104 @@ public class Render {
             int y0 = (tile / tilesX) * TILE;
             int x1 = Math.min(x0 + TILE, nX);
             int y1 = Math.min(y0 + TILE, nY);
-            double[] points = pixelGrid == null ? null : new double[2 * pixelGrid.getSamplesCount()];
             for (int i = y0; i < y1; ++i)
                 for (int j = x0; j < x1; ++j)
-                    imageWriter.writePixel(j, i, renderPixel(j, i, points));
+                    imageWriter.writePixel(j, i, renderPixel(j, i));
             return (long) (x1 - x0) * (y1 - y0);
         }
 
-        /** The colour of a pixel: one ray through its centre, or the average of its jittered rays. */
-        private Color renderPixel(int j, int i, double[] points) {
+        /** The colour of a pixel: seen through its centre, or the average of its jittered or adaptive samples. */
+        private Color renderPixel(int j, int i) {
             ThreadState state = rayTracer.startPixel(j, i);
-            if (pixelGrid == null) {
-                ++state.primaryRays;
-                return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i));
-            }
+            if (pixelGrid == null)
+                return sample(state, j, i, 0.5, 0.5);
+            if (adaptiveSuperSampling)
+                return new AdaptivePixel(state, j, i).color();
+            double[] points = state.pixelPoints(pixelGrid);
             pixelGrid.sample(state.random, points);
             int count = pixelGrid.getSamplesCount();
             Color color = Color.BLACK;
             for (int s = 0; s < count; ++s)
-                color = color.add(rayTracer.traceRay(
-                        camera.constructRayThroughPixel(nX, nY, j, i, points[2 * s], points[2 * s + 1])));
+                color = color.add(sample(state, j, i, points[2 * s], points[2 * s + 1]));
+            return color.reduce(count);
+        }
+
+        /**
+         * The colour seen through a point of a pixel: along the camera's ray through it, or, with an
+         * aperture, the average of the rays from the aperture's jittered points to its focal point.
+         */
+        private Color sample(ThreadState state, int j, int i, double dx, double dy) {
+            if (!camera.hasAperture()) {
+                ++state.primaryRays;
+                return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i, dx, dy));
+            }
+            JitteredGrid apertureGrid = camera.getApertureGrid();
+            double[] points = state.aperturePoints(apertureGrid);
+            apertureGrid.sample(state.random, points);
+            int count = apertureGrid.getSamplesCount();
+            Color color = Color.BLACK;
+            for (int s = 0; s < count; ++s)
+                color = color.add(rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy,
+                        points[2 * s], points[2 * s + 1])));
             state.primaryRays += count;
             return color.reduce(count);
+        }
+
+        /**
+         * One pixel sampled adaptively: its points lie on a lattice of 2^(depth + 1) + 1 points a side
+         * (the centres of the smallest squares are points too), each traced at most once.
+         */
+        private final class AdaptivePixel {
+            private final ThreadState state;
+            private final int j;
+            private final int i;
+            /**
+             * How many times the pixel may be halved: the smallest squares are at least two anti-aliasing cells
+             * wide, so that with their centres the points are no closer than the cells (1/k apart).
+             */
+            private final int maxDepth = Math.max(0, 30 - Integer.numberOfLeadingZeros(pixelGrid.getSqrtSamples()));
+            /** The number of lattice intervals along a side. */
+            private final int side = 2 << maxDepth;
+
+            AdaptivePixel(ThreadState state, int j, int i) {
+                this.state = state;
+                this.j = j;
+                this.i = i;
+                state.startLattice((side + 1) * (side + 1));
+            }
+
+            Color color() {
+                return square(0, 0, side, 0);
+            }
+
+            /** The colour of the square of a lattice edge at a corner (x, y), divided while its points differ. */
+            private Color square(int x, int y, int edge, int depth) {
+                int half = edge / 2;
+                Color centre = point(x + half, y + half);
+                Color c00 = point(x, y);
+                Color c10 = point(x + edge, y);
+                Color c01 = point(x, y + edge);
+                Color c11 = point(x + edge, y + edge);
+                if (depth == maxDepth || !(differ(centre, c00) || differ(centre, c10) || differ(centre, c01)
+                        || differ(centre, c11)))
+                    return centre.add(c00, c10, c01, c11).reduce(5);
+                return square(x, y, half, depth + 1).add(square(x + half, y, half, depth + 1),
+                        square(x, y + half, half, depth + 1), square(x + half, y + half, half, depth + 1)).reduce(4);
+            }
+
+            /** The colour seen through a lattice point, traced the first time it is asked for. */
+            private Color point(int x, int y) {
+                int index = y * (side + 1) + x;
+                Color color = state.latticeColor(index);
+                return color != null ? color
+                        : state.keepLatticeColor(index, sample(state, j, i, (double) x / side, (double) y / side));
+            }
+
+            private static boolean differ(Color a, Color b) {
+                return Math.abs(a.getR() - b.getR()) > ADAPTIVE_THRESHOLD
+                        || Math.abs(a.getG() - b.getG()) > ADAPTIVE_THRESHOLD
+                        || Math.abs(a.getB() - b.getB()) > ADAPTIVE_THRESHOLD;
+            }
         }
 
         private void printProgress() {

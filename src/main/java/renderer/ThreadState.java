@@ -1,6 +1,9 @@
 package renderer;
 
+import java.util.Arrays;
+
 import geometries.BoundingVolumeHierarchy;
+import primitives.Color;
 
 /**
  * What one rendering thread keeps for itself in a ray tracer, so that the per-pixel path takes no
@@ -25,6 +28,13 @@ final class ThreadState {
     private final double[] spreadPoint = new double[2];
     private BoundingVolumeHierarchy queried;
     private BoundingVolumeHierarchy.Query query;
+    private double[] pixelPoints = new double[0];
+    private double[] aperturePoints = new double[0];
+    /** The colours seen through the lattice points of the pixel being sampled adaptively. */
+    private Color[] lattice = new Color[0];
+    /** The pixel a lattice point's colour belongs to: its entry is current when it equals {@link #latticePixel}. */
+    private int[] latticeStamps = new int[0];
+    private int latticePixel;
 
     /**
      * Creates the state of a thread.
@@ -42,10 +52,71 @@ final class ThreadState {
      * @return an array of at least 2 k² doubles
      */
     double[] points(JitteredGrid grid) {
+        return points = room(points, grid);
+    }
+
+    /**
+     * Room for the sample points of a pixel (anti-aliasing), apart from those of shadows and aperture.
+     *
+     * @param grid the pixel's grid
+     * @return an array of at least 2 k² doubles
+     */
+    double[] pixelPoints(JitteredGrid grid) {
+        return pixelPoints = room(pixelPoints, grid);
+    }
+
+    /**
+     * Room for the sample points of the camera's aperture (depth of field), apart from the others.
+     *
+     * @param grid the aperture's grid
+     * @return an array of at least 2 k² doubles
+     */
+    double[] aperturePoints(JitteredGrid grid) {
+        return aperturePoints = room(aperturePoints, grid);
+    }
+
+    private static double[] room(double[] array, JitteredGrid grid) {
         int length = 2 * grid.getSamplesCount();
-        if (points.length < length)
-            points = new double[length];
-        return points;
+        return array.length < length ? new double[length] : array;
+    }
+
+    /**
+     * Starts a pixel's lattice of sample points (adaptive super-sampling): every point is unknown.
+     *
+     * @param size the number of points in the lattice
+     */
+    void startLattice(int size) {
+        if (lattice.length < size) {
+            lattice = new Color[size];
+            latticeStamps = new int[size];
+        }
+        if (++latticePixel == 0) { // after 2³² pixels: forget every stamp rather than take an old one for current
+            Arrays.fill(latticeStamps, 0);
+            latticePixel = 1;
+        }
+    }
+
+    /**
+     * The colour seen through a lattice point of the current pixel.
+     *
+     * @param point the point's index
+     * @return its colour, or null when it has not been traced for this pixel yet
+     */
+    Color latticeColor(int point) {
+        return latticeStamps[point] == latticePixel ? lattice[point] : null;
+    }
+
+    /**
+     * Keeps the colour seen through a lattice point of the current pixel.
+     *
+     * @param point the point's index
+     * @param color its colour
+     * @return the colour
+     */
+    Color keepLatticeColor(int point, Color color) {
+        lattice[point] = color;
+        latticeStamps[point] = latticePixel;
+        return color;
     }
 
     /**
@@ -56,10 +127,7 @@ final class ThreadState {
      * @return an array of at least 2 k² doubles
      */
     double[] spreadPoints(JitteredGrid grid) {
-        int length = 2 * grid.getSamplesCount();
-        if (spreadPoints.length < length)
-            spreadPoints = new double[length];
-        return spreadPoints;
+        return spreadPoints = room(spreadPoints, grid);
     }
 
     /** {@return room for the one jittered point of a spread ray inside a beam (2 doubles)} */

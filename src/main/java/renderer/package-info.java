@@ -6,9 +6,10 @@
  * <p>
  * Soft shadows, adaptive soft shadows and anti-aliasing all take their random points from one sampler,
  * {@link renderer.JitteredGrid}, fed by a random stream per pixel, so the same scene and settings give the
- * same picture bit for bit whatever the number of threads.
- * <p>
- * The spread reflected and refracted rays of glossy and blurry materials (a material's {@code kG} and
- * {@code kB}) come from the same sampler and streams.
+ * same picture bit for bit whatever the number of threads. So do the spread reflected and refracted rays of
+ * glossy and blurry materials (a material's {@code kG} and {@code kB}), and depth of field (the camera's aperture,
+ * {@link renderer.Camera#setApertureSize}); adaptive super-sampling
+ * ({@link renderer.Render#setAdaptiveSuperSampling}) traces a pixel's corners and centre first and divides
+ * only where they differ.
  */
 package renderer;

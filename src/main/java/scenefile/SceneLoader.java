@@ -93,9 +93,18 @@ public final class SceneLoader {
         if (camera == null) // the schema's defaults: the course's first camera
             return new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(500, 500)
                     .setVpDistance(100);
-        return build(camera, () -> new Camera(camera.point("p0"), camera.vector("vTo"), camera.vector("vUp"))
+        return build(camera, () -> lens(new Camera(camera.point("p0"), camera.vector("vTo"), camera.vector("vUp"))
                 .setVpSize(camera.number("vp-width"), camera.number("vp-height"))
-                .setVpDistance(camera.number("vp-distance")));
+                .setVpDistance(camera.number("vp-distance")), camera));
+    }
+
+    /** Gives a camera the depth of field of its element. */
+    private static Camera lens(Camera camera, SceneElement element) {
+        camera.setApertureSize(element.number("aperture"))
+                .setSqrtApertureRays(grid(element, "aperture-rays"));
+        if (element.has("focal-distance"))
+            camera.setFocalDistance(element.number("focal-distance"));
+        return camera;
     }
 
     private static RenderSettings settings(SceneElement render) {
@@ -103,12 +112,12 @@ public final class SceneLoader {
             return RenderSettings.DEFAULT;
         return build(render, () -> new RenderSettings(render.flag("soft-shadows"), render.flag("adaptive"),
                 grid(render, "beams"), grid(render, "anti-aliasing"), render.longInteger("seed"),
-                grid(render, "gloss-rays")));
+                grid(render, "gloss-rays"), render.flag("adaptive-super-sampling")));
     }
 
     /** A sample grid's size, named by its attribute when it is out of bounds. */
-    private static int grid(SceneElement render, String attribute) {
-        return JitteredGrid.requireSqrtSamples(render.integer(attribute), "attribute '" + attribute + "'");
+    private static int grid(SceneElement element, String attribute) {
+        return JitteredGrid.requireSqrtSamples(element.integer(attribute), "attribute '" + attribute + "'");
     }
 
     private static LightSource light(SceneElement light) {

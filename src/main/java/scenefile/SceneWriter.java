@@ -112,6 +112,7 @@ public final class SceneWriter {
                 .attribute("seed", Long.toString(settings.seed()), Long.toString(RenderSettings.DEFAULT.seed()))
                 .attribute("gloss-rays", Integer.toString(settings.sqrtGlossRays()),
                         Integer.toString(RenderSettings.DEFAULT.sqrtGlossRays()))
+                .attribute("adaptive-super-sampling", Boolean.toString(settings.adaptiveSuperSampling()), "false")
                 .emptyOrNothing();
         // the ambient light keeps only Ia·kA: written as the colour, with kA = 1
         xml.start("ambient-light").attribute("color", color(scene.ambientLight.getIntensity()), "0 0 0")
@@ -138,7 +139,11 @@ public final class SceneWriter {
                 .attribute("vUp", direction(camera.getVUp()), "0 1 0")
                 .attribute("vp-width", number(camera.getWidth()), "500")
                 .attribute("vp-height", number(camera.getHeight()), "500")
-                .attribute("vp-distance", number(camera.getDistance()), "100").emptyOrNothing();
+                .attribute("vp-distance", number(camera.getDistance()), "100")
+                .attribute("aperture", number(camera.getApertureSize()), "0")
+                .attribute("focal-distance", number(camera.getFocalDistance()), number(camera.getDistance()))
+                .attribute("aperture-rays", Integer.toString(camera.getSqrtApertureRays()),
+                        Integer.toString(Camera.DEFAULT_SQRT_APERTURE_RAYS)).emptyOrNothing();
     }
 
     private static void light(Xml xml, LightSource light) {

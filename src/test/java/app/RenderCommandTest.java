@@ -374,6 +374,52 @@ class RenderCommandTest {
         }
     }
 
+    /**
+     * Test method for --adaptive-aa, --aperture, --focus and --aperture-rays: ray counts, pictures and bad values.
+     */
+    @Test
+    void testPictureImprovementOptions() throws IOException {
+        String[] size = {"--width", "40", "--height", "40"};
+        int pixels = 40 * 40;
+        // ===== Equivalence Partitions Tests =====
+        // TC01: --aa 4 traces 16 rays a pixel; with --adaptive-aa between 5 (flat) and 16 a pixel on average
+        assertEquals(16L * pixels, reported(render("aa4", concat(size, "--aa", "4")), "Primary rays:"),
+                "TC01: --aa 4 should trace 16 rays a pixel");
+        long adaptive = reported(render("adaptiveAa4", concat(size, "--aa", "4", "--adaptive-aa")), "Primary rays:");
+        assertTrue(adaptive >= 5L * pixels && adaptive < 16L * pixels, "TC01: --adaptive-aa traced " + adaptive);
+        // TC02: --aperture 40 --focus 1100 --aperture-rays 2: 4 rays a pixel, and the picture blurs
+        assertEquals(4L * pixels, reported(render("lens", concat(size, "--aperture", "40", "--focus", "1100",
+                "--aperture-rays", "2")), "Primary rays:"), "TC02: 2 x 2 aperture rays a pixel");
+        render("pinhole", size);
+        assertFalse(samePixels(image("pinhole"), image("lens")), "TC02: --aperture did not change the picture");
+        // TC03: depth of field and adaptive super-sampling together: 1 and 3 threads give the same pixels
+        String[] both = concat(size, "--aperture", "40", "--focus", "1100", "--aperture-rays", "2", "--aa", "2",
+                "--adaptive-aa", "--soft-shadows", "--beams", "2");
+        render("improvements1", concat(both, "--threads", "1"));
+        render("improvements3", concat(both, "--threads", "3"));
+        assertTrue(samePixels(image("improvements1"), image("improvements3")), "TC03: the threads changed the picture");
+        // TC04: --help lists the options
+        String help = run("--help").out().replaceAll("\\s+", " ");
+        for (String option : List.of("--[no-]adaptive-aa", "--aperture=A", "--focus=F", "--aperture-rays=N"))
+            assertTrue(help.contains(option), "TC04: the help does not list " + option + ":\n" + help);
+
+        // ===== Boundary Values Tests =====
+        // TC11: --aperture 0 is the pinhole camera, and --no-adaptive-aa with --aa 4 traces 16 rays a pixel
+        render("aperture0", concat(size, "--aperture", "0"));
+        assertTrue(samePixels(image("pinhole"), image("aperture0")), "TC11: --aperture 0 changed the picture");
+        assertEquals(16L * pixels, reported(render("notAdaptive", concat(size, "--aa", "4", "--no-adaptive-aa")),
+                "Primary rays:"), "TC11: --no-adaptive-aa should trace every ray");
+        // TC12: bad values are one line naming the option, exit code 2
+        String scene = sceneFile.toString();
+        String png = FOLDER.resolve("badLens.png").toString();
+        assertBadArgument("TC12", "--aperture must not be negative, got -1.0", scene, "-o", png, "--aperture", "-1");
+        assertBadArgument("TC12", "--aperture must be a finite number, got NaN", scene, "-o", png, "--aperture", "NaN");
+        assertBadArgument("TC12", "--focus must be positive, got 0.0", scene, "-o", png, "--focus", "0");
+        assertBadArgument("TC12", "--aperture-rays must be between 1 and 1000, got 0", scene, "-o", png,
+                "--aperture-rays", "0");
+        assertFalse(Files.exists(Path.of(png)), "TC12: an image was written despite bad arguments");
+    }
+
     /** Test method for --help and --version. */
     @Test
     void testHelp() {

@@ -27,8 +27,10 @@ import scene.Scene;
  * floor, one square light of edge 20, soft shadows with 9 × 9 + 1 shadow rays, 800 × 800) and M (the
  * same with every sphere tessellated into a triangle mesh); at mesh scale G10k, G100k and G1M (a
  * bumpy {@link Terrain} of about 10k, 100k and 1M triangles, 400 × 400, a light of edge 60) and F2
- * (a forest of 20 × 60 small spheres, 400 × 400, the same light); SG (scene S with a glossy floor, kR
- * 0.5 and kG 0.05, 5 × 5 spread rays at each floor point, 400 × 400). Per scene it prints:
+ * (a forest of 20 × 60 small spheres, 400 × 400, the same light); for the picture improvements, scene S
+ * at 400 × 400 seen through an aperture (SDOF: edge 20, focused on the origin, 3 × 3 aperture rays per
+ * pixel), with 4 × 4 anti-aliasing (SAA), with it adaptive (SAAA), and with a glossy floor (SG: kR 0.5
+ * and kG 0.05, 5 × 5 spread rays at each floor point). Per scene it prints:
  * <ul>
  * <li>the bodies in the hierarchy, the seconds of building it (the median of {@value #BUILDS}
  * builds on the render's threads, outside any render), and the bytes per body of the scene and its
@@ -38,9 +40,9 @@ import scene.Scene;
  * <li>the primary and shadow rays of a frame (and the share of the shadow rays whose bundle was
  * open: nothing could block them, so no body was tested), the seconds of the first frame (which
  * builds the render's hierarchy), the median seconds of the timed frames (warm: the hierarchy is
- * built once, not per frame), and million shadow rays per second;</li>
- * <li>with glossy or blurry surfaces, the spread rays of a frame and million rays (primary, shadow
- * and spread) per second.</li>
+ * built once, not per frame), million shadow rays per second, and million rays (primary, shadow and
+ * spread) per second;</li>
+ * <li>with glossy or blurry surfaces, the spread rays of a frame.</li>
  * </ul>
  * <p>
  * Options: {@code --scene} a scene, several separated by commas, or {@code all} (the default: S and
@@ -50,7 +52,8 @@ import scene.Scene;
  */
 public final class Benchmark {
     /** The scenes, by name. */
-    private static final List<String> SCENES = List.of("S", "M", "G10k", "G100k", "G1M", "F2", "SG");
+    private static final List<String> SCENES = List.of("S", "M", "G10k", "G100k", "G1M", "F2", "SDOF", "SAA", "SAAA",
+            "SG");
     /** The width and height of the pictures of S and M, in pixels. */
     private static final int SIZE = 800;
     /** The width and height of the pictures of the terrains and the forest, in pixels. */
@@ -71,6 +74,11 @@ public final class Benchmark {
     private static final int BUILDS = 3;
     /** Where the pictures go. */
     private static final Path OUTPUT = Path.of("target", "benchmark");
+    /** SDOF's aperture: its edge, and the rays along each side of it. */
+    private static final double APERTURE = 20;
+    private static final int APERTURE_RAYS = 3;
+    /** SAA's and SAAA's anti-aliasing: rays along each side of a pixel. */
+    private static final int ANTI_ALIASING = 4;
     /** The material of every body. */
     private static final Material DIFFUSE = new Material().setKd(0.8);
     /** The floor of scene SG: half diffuse, half a glossy mirror. */
@@ -159,6 +167,7 @@ public final class Benchmark {
         int size = sizeOf(name);
         Render render = new Render().setImageWriter(new ImageWriter(name, size, size, OUTPUT)).setCamera(camera)
                 .setRayTracer(rayTracer).setSoftShadows(true).setSqrtBeamNum(9).setMultithreading(threads);
+        improve(name, camera, render);
         double[] warm = new double[warmup];
         for (int f = 0; f < warmup; ++f)
             warm[f] = timedRender(render);
@@ -183,12 +192,27 @@ public final class Benchmark {
         double median = median(seconds);
         System.out.printf("%s: %d pixels, %d primary rays/frame, %d shadow rays/frame (%.1f %% in open bundles),"
                         + " first frame %.3f s (with the build), median %.3f s/frame (frames %s s),"
-                        + " %.2f M shadow rays/s%n",
+                        + " %.2f M shadow rays/s, %.2f M rays/s%n",
                 name, size * size, primary, shadow, 100.0 * open / shadow, first, median, format(seconds),
-                shadow / median / 1e6);
+                shadow / median / 1e6, (primary + shadow + spread) / median / 1e6);
         if (spread > 0)
-            System.out.printf("%s: %d spread rays/frame, %.2f M rays/s (primary, shadow and spread)%n", name, spread,
-                    (primary + shadow + spread) / median / 1e6);
+            System.out.printf("%s: %d spread rays/frame%n", name, spread);
+    }
+
+    /**
+     * Gives the picture improvements' scenes their settings: an aperture, or anti-aliasing (adaptive or not).
+     *
+     * @param name   the scene's name
+     * @param camera its camera
+     * @param render its render
+     */
+    private static void improve(String name, Camera camera, Render render) {
+        switch (name) {
+            case "SDOF" -> camera.setApertureSize(APERTURE).setFocalDistance(1000).setSqrtApertureRays(APERTURE_RAYS);
+            case "SAA" -> render.setAntiAliasing(ANTI_ALIASING);
+            case "SAAA" -> render.setAntiAliasing(ANTI_ALIASING).setAdaptiveSuperSampling(true);
+            default -> { } // the reference scenes as SPEC §8 gives them
+        }
     }
 
     /**
@@ -228,7 +252,7 @@ public final class Benchmark {
      */
     static Scene buildScene(String name) {
         return switch (name) {
-            case "S", "M" -> buildScene(name.equals("M"));
+            case "S", "M", "SDOF", "SAA", "SAAA" -> buildScene(name.equals("M"));
             case "F2" -> forest();
             case "SG" -> glossyFloor();
             default -> terrain(name, Integer.parseInt(name.substring(1).replace("k", "000").replace("M", "000000")));
@@ -367,7 +391,8 @@ public final class Benchmark {
      */
     private static <T> T usage(String problem) {
         System.err.println("benchmark: " + problem);
-        System.err.println("usage: Benchmark [--scene S|M|G10k|G100k|G1M|F2|SG|all, or several separated by commas]"
+        System.err.println("usage: Benchmark [--scene S|M|G10k|G100k|G1M|F2|SDOF|SAA|SAAA|SG|all, or several"
+                + " separated by commas]"
                 + " [--frames N] [--warmup N] [--threads N]");
         System.exit(2);
         throw new IllegalStateException(problem);

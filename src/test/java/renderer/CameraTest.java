@@ -371,4 +371,124 @@ class CameraTest {
         assertThrows(IllegalArgumentException.class, () -> camera.constructRayThroughPixel(3, 3, 1, 1, -1e-3, 0.5),
                 "TC12: negative offset accepted");
     }
+
+    /**
+     * Test method for {@link renderer.Camera#setFocalDistance(double)}, {@link renderer.Camera#setApertureSize(double)}
+     * and {@link renderer.Camera#setSqrtApertureRays(int)}.
+     */
+    @Test
+    void testDepthOfFieldSetters() {
+        Camera camera = originCamera().setVpSize(4, 4).setVpDistance(10);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the defaults: a pinhole (aperture 0), the view plane (10) in focus, 9 × 9 aperture rays
+        assertEquals(0, camera.getApertureSize(), 0, "TC01: the aperture must default to 0");
+        assertFalse(camera.hasAperture(), "TC01: a pinhole camera has no aperture");
+        assertEquals(10, camera.getFocalDistance(), 1e-10, "TC01: the view plane must be in focus by default");
+        assertEquals(Camera.DEFAULT_SQRT_APERTURE_RAYS, camera.getSqrtApertureRays(), "TC01: 9 aperture rays a side");
+        // TC02: values are kept (focus 250, aperture 3.5, 5 rays a side) and the setters return this camera
+        assertSame(camera, camera.setFocalDistance(250), "TC02: setFocalDistance does not return this");
+        assertSame(camera, camera.setApertureSize(3.5), "TC02: setApertureSize does not return this");
+        assertSame(camera, camera.setSqrtApertureRays(5), "TC02: setSqrtApertureRays does not return this");
+        assertEquals(250, camera.getFocalDistance(), 1e-10, "TC02: wrong focal distance");
+        assertEquals(3.5, camera.getApertureSize(), 1e-10, "TC02: wrong aperture");
+        assertTrue(camera.hasAperture(), "TC02: aperture 3.5 must be on");
+        assertEquals(5, camera.getSqrtApertureRays(), "TC02: wrong aperture rays");
+        assertEquals(5, camera.getApertureGrid().getSqrtSamples(), "TC02: the aperture grid must be 5 × 5");
+        // TC03: negative, NaN or infinite values are rejected, naming the setting, and leave the old values
+        double[] bad = {-1, Double.NaN, Double.POSITIVE_INFINITY};
+        for (double value : bad) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> camera.setFocalDistance(value), "TC03: focal distance " + value + " accepted");
+            assertMessage(e, "focal distance", "TC03");
+            e = assertThrows(IllegalArgumentException.class, () -> camera.setApertureSize(value),
+                    "TC03: aperture " + value + " accepted");
+            assertMessage(e, "aperture size", "TC03");
+        }
+        assertEquals(250, camera.getFocalDistance(), 1e-10, "TC03: focal distance changed by a rejected call");
+        assertEquals(3.5, camera.getApertureSize(), 1e-10, "TC03: aperture changed by a rejected call");
+
+        // ===== Boundary Values Tests =====
+        // TC11: focal distance 0 is rejected (nothing can be in focus at the camera)
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> camera.setFocalDistance(0),
+                "TC11: focal distance 0 accepted");
+        assertMessage(e, "focal distance", "TC11");
+        // TC12: aperture 0 is accepted: the pinhole camera again
+        camera.setApertureSize(0);
+        assertFalse(camera.hasAperture(), "TC12: aperture 0 must be a pinhole");
+        // TC13: aperture rays 0 and 1001 a side are rejected naming the setting; 1 and 1000 are accepted
+        e = assertThrows(IllegalArgumentException.class, () -> camera.setSqrtApertureRays(0), "TC13: 0 accepted");
+        assertMessage(e, "sqrtApertureRays", "TC13");
+        e = assertThrows(IllegalArgumentException.class, () -> camera.setSqrtApertureRays(1001), "TC13: 1001 accepted");
+        assertMessage(e, "between 1 and 1000", "TC13");
+        assertEquals(1, camera.setSqrtApertureRays(1).getSqrtApertureRays(), "TC13: 1 must be accepted");
+        assertEquals(1000, camera.setSqrtApertureRays(1000).getSqrtApertureRays(), "TC13: 1000 must be accepted");
+    }
+
+    /**
+     * Test method for
+     * {@link renderer.Camera#constructRayThroughAperture(int, int, int, int, double, double, double, double)}.
+     */
+    @Test
+    void testConstructRayThroughAperture() {
+        // a slanted camera, so that every axis matters: at (1,2,3) looking along (1,1,0), up (0,0,1)
+        Camera camera = new Camera(new Point3D(1, 2, 3), new Vector(1, 1, 0), new Vector(0, 0, 1)).setVpSize(8, 6)
+                .setVpDistance(10).setApertureSize(2).setFocalDistance(40);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: rays from points all over the aperture through pixel (1, 2) of 4 × 3, at (0.3, 0.8) in it:
+        // each starts on the aperture (in the vRight/vUp plane through p0, within 1 of p0 along each) and
+        // passes through the point where the pinhole ray meets the focal plane (40 along vTo)
+        Ray pinhole = camera.constructRayThroughPixel(4, 3, 1, 2, 0.3, 0.8);
+        double t = 40 / pinhole.getDir().dotProduct(camera.getVTo());
+        Point3D focal = pinhole.getPoint(t);
+        double[][] uv = {{0.2, 0.7}, {0.9, 0.1}, {0.5, 0.5}, {0.35, 0.95}};
+        for (double[] point : uv) {
+            Ray ray = camera.constructRayThroughAperture(4, 3, 1, 2, 0.3, 0.8, point[0], point[1]);
+            assertEquals(0, along(ray.getP0(), camera, camera.getVTo()), 1e-10,
+                    "TC01: the ray must start in the aperture's plane");
+            assertEquals((point[0] - 0.5) * 2, along(ray.getP0(), camera, camera.getVRight()), 1e-10,
+                    "TC01: wrong start along vRight for " + point[0]);
+            assertEquals((point[1] - 0.5) * 2, along(ray.getP0(), camera, camera.getVUp()), 1e-10,
+                    "TC01: wrong start along vUp for " + point[1]);
+            Vector toFocal = focal.subtract(ray.getP0());
+            assertEquals(0, ray.getPoint(toFocal.dotProduct(ray.getDir())).distance(focal), 1e-9,
+                    "TC01: the ray must pass through the focal point");
+            assertTrue(toFocal.dotProduct(ray.getDir()) > 0, "TC01: the focal point must lie ahead");
+        }
+        // TC02: the aperture's centre (0.5, 0.5) gives the pinhole ray
+        Ray centre = camera.constructRayThroughAperture(4, 3, 1, 2, 0.3, 0.8, 0.5, 0.5);
+        assertEquals(camera.getP0(), centre.getP0(), "TC02: the centre's ray starts at p0");
+        assertEquals(pinhole.getDir(), centre.getDir(), "TC02: the centre's ray is the pinhole ray");
+
+        // ===== Boundary Values Tests =====
+        // TC11: aperture points on its corners (0, 0) and (1, 1) are accepted; just outside 0..1 is rejected
+        Ray corner = camera.constructRayThroughAperture(4, 3, 1, 2, 0.3, 0.8, 0, 0);
+        assertEquals(Math.sqrt(2), corner.getP0().distance(camera.getP0()), 1e-10, "TC11: corner (0, 0) of the aperture");
+        corner = camera.constructRayThroughAperture(4, 3, 1, 2, 0.3, 0.8, 1, 1);
+        assertEquals(Math.sqrt(2), corner.getP0().distance(camera.getP0()), 1e-10, "TC11: corner (1, 1) of the aperture");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> camera.constructRayThroughAperture(4, 3, 1, 2, 0.3, 0.8, -0.01, 0.5), "TC11: u = −0.01 accepted");
+        assertMessage(e, "aperture offset", "TC11");
+        assertThrows(IllegalArgumentException.class,
+                () -> camera.constructRayThroughAperture(4, 3, 1, 2, 0.3, 0.8, 0.5, 1.01), "TC11: v = 1.01 accepted");
+        assertThrows(IllegalArgumentException.class,
+                () -> camera.constructRayThroughAperture(4, 3, 1, 2, 0.3, 0.8, 0.5, Double.NaN), "TC11: NaN accepted");
+        // TC12: the pixel checks of constructRayThroughPixel apply too: pixel (4, 0) is outside 4 × 3
+        e = assertThrows(IllegalArgumentException.class,
+                () -> camera.constructRayThroughAperture(4, 3, 4, 0, 0.5, 0.5, 0.5, 0.5), "TC12: pixel (4, 0) accepted");
+        assertMessage(e, "outside", "TC12");
+        // TC13: without a focal distance the rays meet on the view plane (10 along vTo)
+        Camera viewPlane = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(4, 4)
+                .setVpDistance(10).setApertureSize(2);
+        Ray ray = viewPlane.constructRayThroughAperture(2, 2, 0, 0, 0.5, 0.5, 0, 1);
+        assertEquals(new Point3D(-1, 1, 0), ray.getP0(), "TC13: the ray must start at the aperture's corner");
+        assertEquals(new Point3D(-1, 1, -10), ray.getPoint(10),
+                "TC13: the rays must meet where the pixel's centre is on the view plane");
+    }
+
+    /** The offset of a point from the camera's position along one of its axes. */
+    private static double along(Point3D point, Camera camera, Vector axis) {
+        Point3D p0 = camera.getP0();
+        return (point.getX() - p0.getX()) * axis.getX() + (point.getY() - p0.getY()) * axis.getY()
+                + (point.getZ() - p0.getZ()) * axis.getZ();
+    }
 }

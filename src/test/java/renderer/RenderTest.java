@@ -18,9 +18,12 @@ import org.junit.jupiter.api.Test;
 
 import geometries.BoundingVolumeHierarchy;
 import geometries.Geometries;
+import geometries.Plane;
+import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
 import lighting.AmbientLight;
+import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
@@ -652,5 +655,278 @@ class RenderTest {
         // TC11: before setRayTracer: null
         org.junit.jupiter.api.Assertions.assertNull(new Render().getRayTracer(),
                 "TC11: getRayTracer must be null before it is set");
+    }
+
+    // ----- depth of field -----
+
+    /** The camera of the depth-of-field tests: at the origin looking down −z, the view plane at distance 100. */
+    private static Camera lensCamera(double vpWidth, double vpHeight) {
+        return new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(vpWidth, vpHeight)
+                .setVpDistance(100);
+    }
+
+    /** Renders a picture with a camera, its settings made by the caller on the render returned before rendering. */
+    private static Render render(String name, int nX, int nY, Camera camera, RayTracerBase tracer, int k,
+                                 boolean adaptive, int threads) {
+        Render render = new Render().setImageWriter(new ImageWriter(name, nX, nY, FOLDER)).setCamera(camera)
+                .setRayTracer(tracer).setAntiAliasing(k).setAdaptiveSuperSampling(adaptive).setMultithreading(threads);
+        render.renderImage();
+        render.writeToImage();
+        return render;
+    }
+
+    /** A square of emission {@code color} at depth z, from (x0, y0) to (x1, y1). */
+    private static Polygon square(double x0, double y0, double x1, double y1, double z, Color color) {
+        return (Polygon) new Polygon(new Point3D(x0, y0, z), new Point3D(x1, y0, z), new Point3D(x1, y1, z),
+                new Point3D(x0, y1, z)).setEmission(color);
+    }
+
+    /** Four emissive squares of different colours on the plane z = −500, meeting at the axis. */
+    private static Scene checkerScene(String name) {
+        Scene scene = new Scene(name);
+        scene.geometries.add(square(-300, -300, 0, 0, -500, new Color(200, 0, 0)),
+                square(0, -300, 300, 0, -500, new Color(0, 200, 0)),
+                square(-300, 0, 0, 300, -500, new Color(0, 0, 200)),
+                square(0, 0, 300, 300, -500, new Color(200, 200, 200)));
+        return scene;
+    }
+
+    /**
+     * Test method for {@link Render#renderImage()} with {@link Camera#setApertureSize(double)} and
+     * {@link Camera#setFocalDistance(double)}: what lies on the focal plane renders as with a pinhole.
+     */
+    @Test
+    void testDepthOfFieldFocalPlane() {
+        Render pinhole = render("dofPinhole", 50, 50, lensCamera(100, 100), new RayTracerBasic(checkerScene("pin")),
+                1, false, 2);
+        RayTracerBase lensTracer = new RayTracerBasic(checkerScene("lens"));
+        Render lens = render("dofFocused", 50, 50, lensCamera(100, 100).setApertureSize(30).setFocalDistance(500)
+                .setSqrtApertureRays(4), lensTracer, 1, false, 2);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the checkerboard lies on the focal plane (z = −500): every pixel as with the pinhole camera,
+        // sharp edges included, though each pixel's 16 rays start 30 units apart
+        assertSamePicture(pinhole, lens, "TC01: the focal plane must render as with a pinhole camera");
+        // TC02: 16 rays a pixel: 50 · 50 · 16 = 40000 primary rays
+        assertEquals(50 * 50 * 16, lensTracer.getPrimaryRaysCount(), "TC02: 4 × 4 aperture rays a pixel");
+        // TC03: focused elsewhere (z = −250), the same aperture blurs the checkerboard's edges
+        Render blurred = render("dofBlurred", 50, 50, lensCamera(100, 100).setApertureSize(30).setFocalDistance(250)
+                .setSqrtApertureRays(4), new RayTracerBasic(checkerScene("blur")), 1, false, 2);
+        assertTrue(countDifferent(pinhole, blurred) > 50, "TC03: off the focal plane the edges must blur");
+
+        // ===== Boundary Values Tests =====
+        // TC11: without a focal distance the view plane (distance 100) is in focus: the same as focal distance 100
+        Render viewPlane = render("dofViewPlane", 50, 50, lensCamera(100, 100).setApertureSize(30)
+                .setSqrtApertureRays(4), new RayTracerBasic(checkerScene("vp")), 1, false, 2);
+        Render hundred = render("dofHundred", 50, 50, lensCamera(100, 100).setApertureSize(30).setFocalDistance(100)
+                .setSqrtApertureRays(4), new RayTracerBasic(checkerScene("100")), 1, false, 2);
+        assertSamePicture(hundred, viewPlane, "TC11: the view plane must be in focus by default");
+        // TC12: aperture 0 set explicitly (with a focal distance) is the pinhole camera, one ray a pixel
+        RayTracerBase zeroTracer = new RayTracerBasic(checkerScene("zero"));
+        Render zero = render("dofZero", 50, 50, lensCamera(100, 100).setApertureSize(0).setFocalDistance(250),
+                zeroTracer, 1, false, 2);
+        assertSamePicture(pinhole, zero, "TC12: aperture 0 must be the pinhole camera");
+        assertEquals(50 * 50, zeroTracer.getPrimaryRaysCount(), "TC12: aperture 0 must trace one ray a pixel");
+    }
+
+    /** The image width of the blur tests, in pixels, and the view plane's width (0.1 a pixel). */
+    private static final int BLUR_NX = 200;
+    private static final double BLUR_VP_WIDTH = 20;
+    /** The focal distance of the blur tests. */
+    private static final double BLUR_FOCUS = 1000;
+
+    /**
+     * Renders a white half-plane x &gt; 0 at depth d on black with an aperture focused at {@link #BLUR_FOCUS}
+     * and returns the width, in pixels, over which its edge rises from 10 % to 90 % (rows averaged).
+     */
+    private static double edgeWidth(String name, double aperture, double depth) {
+        Scene scene = new Scene(name);
+        scene.geometries.add(square(0, -10 * depth, 10 * depth, 10 * depth, -depth, new Color(255, 255, 255)));
+        Camera camera = lensCamera(BLUR_VP_WIDTH, 0.8).setApertureSize(aperture).setFocalDistance(BLUR_FOCUS)
+                .setSqrtApertureRays(16);
+        Render render = render(name, BLUR_NX, 8, camera, new RayTracerBasic(scene), 1, false, 2);
+        double[] profile = new double[BLUR_NX];
+        for (int x = 0; x < BLUR_NX; ++x)
+            for (int y = 0; y < 8; ++y)
+                profile[x] += pixel(render, x, y).getRed() / 255.0 / 8;
+        return crossing(profile, 0.9) - crossing(profile, 0.1);
+    }
+
+    /** Where a rising profile first reaches a level, interpolated between pixel centres. */
+    private static double crossing(double[] profile, double level) {
+        int x = 1;
+        while (profile[x] < level)
+            ++x;
+        return x - 1 + (level - profile[x - 1]) / (profile[x] - profile[x - 1]);
+    }
+
+    /**
+     * The predicted 10–90 % width, in pixels, of the blurred edge at depth d: the aperture's rays aimed at a
+     * pixel's focal point spread over A·|d − f|/f at depth d, which the view plane (distance 100) sees
+     * as A·|d − f|/f · 100/d; the edge rises linearly over that, 80 % of it between 10 % and 90 %.
+     */
+    private static double predictedWidth(double aperture, double depth) {
+        double onViewPlane = aperture * Math.abs(depth - BLUR_FOCUS) / depth * 100 / BLUR_FOCUS;
+        return 0.8 * onViewPlane / (BLUR_VP_WIDTH / BLUR_NX);
+    }
+
+    /**
+     * Test method for {@link Render#renderImage()} with {@link Camera#setApertureSize(double)}: the blur of an
+     * edge off the focal plane grows with aperture × |d − f| / d.
+     */
+    @Test
+    void testDepthOfFieldBlurWidth() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: aperture 20, edge at d = 2000 behind the focus 1000: 10–90 % width 0.8 · 10 = 8 pixels
+        // TC02: aperture 40 at the same depth: twice as wide, 16 pixels
+        // TC03: aperture 20, d = 1500: 0.8 · 6.67 = 5.33 pixels
+        // TC04: aperture 20, in front of the focus, d = 600: 0.8 · 13.3 = 10.7 pixels
+        double[][] cases = {{20, 2000}, {40, 2000}, {20, 1500}, {20, 600}};
+        for (int c = 0; c < cases.length; ++c) {
+            double predicted = predictedWidth(cases[c][0], cases[c][1]);
+            double measured = edgeWidth("dofEdge" + c, cases[c][0], cases[c][1]);
+            assertEquals(predicted, measured, 0.25 + 0.02 * predicted, "TC0" + (c + 1) + ": aperture " + cases[c][0]
+                    + " at depth " + cases[c][1] + " must blur the edge over " + predicted + " pixels");
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: the edge on the focal plane (d = f = 1000) stays sharp: it rises between two neighbouring
+        // pixels (0.8 of a pixel between their centres), whatever the aperture (40)
+        assertEquals(0.8, edgeWidth("dofEdgeFocused", 40, BLUR_FOCUS), 0.05, "TC11: the focused edge must be sharp");
+    }
+
+    // ----- adaptive super-sampling -----
+
+    /** A lit diffuse floor filling the picture, with a sphere of smooth shading on it. */
+    private static Scene shadedScene(String name, boolean sphere) {
+        Scene scene = new Scene(name).setBackground(BACKGROUND);
+        scene.geometries.add(new Plane(Point3D.ZERO, new Vector(0, 0, 1)).setMaterial(new Material().setKd(0.6)));
+        if (sphere)
+            scene.geometries.add(new Sphere(new Point3D(10, -5, 30), 45).setEmission(new Color(20, 10, 0))
+                    .setMaterial(new Material().setKd(0.5).setKs(0.4).setShininess(30)));
+        scene.lights.add(new DirectionalLight(new Color(250, 220, 200), new Vector(0, 0, -1)));
+        scene.lights.add(new PointLight(new Color(400, 300, 300), new Point3D(-60, 60, 150)).setKl(0.001));
+        return scene;
+    }
+
+    /** The largest difference of a channel between two renders' pixels, and the mean over all channels. */
+    private static double[] difference(Render a, Render b, int size) {
+        double max = 0;
+        double sum = 0;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                java.awt.Color p = pixel(a, x, y);
+                java.awt.Color q = pixel(b, x, y);
+                int[] d = {Math.abs(p.getRed() - q.getRed()), Math.abs(p.getGreen() - q.getGreen()),
+                        Math.abs(p.getBlue() - q.getBlue())};
+                for (int channel : d) {
+                    max = Math.max(max, channel);
+                    sum += channel;
+                }
+            }
+        return new double[] {max, sum / (3.0 * size * size)};
+    }
+
+    /**
+     * Test method for {@link Render#setAdaptiveSuperSampling(boolean)}: the picture of full super-sampling
+     * within the tolerance, with fewer rays.
+     */
+    @Test
+    void testAdaptiveSuperSampling() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a flat picture (a floor under a directional light, seen from above, nothing else): 5 rays a
+        // pixel (4 corners and the centre) instead of 8 · 8 = 64, and the same pixels
+        RayTracerBase flatFull = new RayTracerBasic(floorLitScene("flat full"));
+        RayTracerBase flatAdaptive = new RayTracerBasic(floorLitScene("flat adaptive"));
+        Render full = render("adaptiveFlatFull", AA_SIZE, AA_SIZE, topCamera(), flatFull, 8, false, 2);
+        Render adaptive = render("adaptiveFlat", AA_SIZE, AA_SIZE, topCamera(), flatAdaptive, 8, true, 2);
+        assertEquals(64L * AA_SIZE * AA_SIZE, flatFull.getPrimaryRaysCount(), "TC01: 64 rays a pixel in full");
+        assertEquals(5L * AA_SIZE * AA_SIZE, flatAdaptive.getPrimaryRaysCount(), "TC01: 5 rays a pixel adaptively");
+        assertSamePicture(full, adaptive, "TC01: a flat picture must not change");
+        // TC02: a shaded sphere on the floor (silhouette, highlight, gradients): every channel of every pixel
+        // within 24 levels of full super-sampling (edge pixels: both are estimates), and on average within 0.25
+        // of a level, with under a quarter of the rays
+        RayTracerBase shadedFull = new RayTracerBasic(shadedScene("shaded full", true));
+        RayTracerBase shadedAdaptive = new RayTracerBasic(shadedScene("shaded adaptive", true));
+        full = render("adaptiveShadedFull", 100, 100, topCamera(), shadedFull, 8, false, 2);
+        adaptive = render("adaptiveShaded", 100, 100, topCamera(), shadedAdaptive, 8, true, 2);
+        double[] difference = difference(full, adaptive, 100);
+        assertTrue(difference[0] <= 24, "TC02: a pixel differs by " + difference[0] + " levels");
+        assertTrue(difference[1] <= 0.25, "TC02: pixels differ by " + difference[1] + " levels on average");
+        assertTrue(shadedAdaptive.getPrimaryRaysCount() < shadedFull.getPrimaryRaysCount() / 4,
+                "TC02: adaptive must trace under a quarter of the rays, traced " + shadedAdaptive.getPrimaryRaysCount()
+                        + " of " + shadedFull.getPrimaryRaysCount());
+        // TC03: the emissive sphere of the anti-aliasing test: pixels wholly inside or outside its silhouette
+        // are exact, those on it are blended
+        Render sphere = render("adaptiveSphere", AA_SIZE, AA_SIZE, topCamera(),
+                new RayTracerBasic(sphereScene("adaptive sphere")), 4, true, 2);
+        int blended = 0;
+        for (int y = 0; y < AA_SIZE; ++y)
+            for (int x = 0; x < AA_SIZE; ++x) {
+                if (farthestDistance(x, y) < SILHOUETTE - 0.5)
+                    assertEquals(SPHERE_RGB, pixel(sphere, x, y), "TC03: inner pixel (" + x + ", " + y + ")");
+                else if (nearestDistance(x, y) > SILHOUETTE + 0.5)
+                    assertEquals(java.awt.Color.BLACK, pixel(sphere, x, y), "TC03: outer pixel (" + x + ", " + y + ")");
+                blended += intermediate(pixel(sphere, x, y)) ? 1 : 0;
+            }
+        assertTrue(blended >= 30, "TC03: the silhouette must blend, got " + blended + " pixels");
+
+        // ===== Boundary Values Tests =====
+        // TC11: with anti-aliasing off (k = 1) adaptive super-sampling is one ray through the centre: the same bytes
+        RayTracerBase single = new RayTracerBasic(shadedScene("single", true));
+        Render plain = render("adaptiveOffK1", 100, 100, topCamera(), new RayTracerBasic(shadedScene("k1", true)),
+                1, false, 2);
+        Render adaptiveOne = render("adaptiveK1", 100, 100, topCamera(), single, 1, true, 2);
+        assertSamePicture(plain, adaptiveOne, "TC11: adaptive with k = 1 must be the plain picture");
+        assertEquals(100 * 100, single.getPrimaryRaysCount(), "TC11: one ray a pixel with k = 1");
+        // TC12: k = 2 never divides a pixel (its smallest squares are two cells wide): 5 rays a pixel even on
+        // the sphere's silhouette and highlight
+        RayTracerBase two = new RayTracerBasic(shadedScene("k2", true));
+        render("adaptiveK2", AA_SIZE, AA_SIZE, topCamera(), two, 2, true, 2);
+        assertEquals(5L * AA_SIZE * AA_SIZE, two.getPrimaryRaysCount(), "TC12: 5 rays a pixel with k = 2");
+        // TC13: k = 4 divides at most once: at most 3 × 3 corners and 4 centres, 13 rays a pixel (not 16)
+        RayTracerBase four = new RayTracerBasic(sphereScene("k4 rays"));
+        render("adaptiveK4", AA_SIZE, AA_SIZE, topCamera(), four, 4, true, 2);
+        long rays = four.getPrimaryRaysCount();
+        assertTrue(rays > 5L * AA_SIZE * AA_SIZE && rays <= 13L * AA_SIZE * AA_SIZE,
+                "TC13: between 5 and 13 rays a pixel with k = 4, traced " + rays);
+        // TC14: the default is off, and the setter returns the render
+        Render render = new Render();
+        assertFalse(render.isAdaptiveSuperSampling(), "TC14: adaptive super-sampling must be off by default");
+        assertSame(render, render.setAdaptiveSuperSampling(true), "TC14: the setter must return the render");
+        assertTrue(render.isAdaptiveSuperSampling(), "TC14: adaptive super-sampling must be on");
+    }
+
+    /** A lit diffuse floor filling the picture and nothing else: every ray sees the same colour. */
+    private static Scene floorLitScene(String name) {
+        return shadedScene(name, false).setLights(java.util.List.of(
+                new DirectionalLight(new Color(250, 220, 200), new Vector(0, 0, -1))));
+    }
+
+    /**
+     * Test method for {@link Render#setAdaptiveSuperSampling(boolean)} and {@link Camera#setApertureSize(double)}
+     * with {@link Render#setMultithreading(int)}: pictures are the same whatever the number of threads.
+     */
+    @Test
+    void testPictureImprovementsReproducible() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: soft shadows, depth of field and adaptive super-sampling together: 1 and 3 threads give the
+        // same pixels
+        Render[] renders = new Render[2];
+        int[] threads = {1, 3};
+        for (int t = 0; t < 2; ++t) {
+            RayTracerBase tracer = new RayTracerBasic(shadedScene("threads " + threads[t], true));
+            tracer.setSoftShadows(true).setSqrtBeamNum(3);
+            ((PointLight) tracer.scene.lights.get(1)).setEdgesSize(20);
+            renders[t] = render("improvementsThreads" + threads[t], 60, 60, topCamera().setApertureSize(60)
+                    .setFocalDistance(970).setSqrtApertureRays(2), tracer, 4, true, threads[t]);
+        }
+        assertSamePicture(renders[0], renders[1], "TC01: 1 and 3 threads must give the same picture");
+        // TC02: depth of field with full super-sampling: 1 and 3 threads give the same pixels
+        for (int t = 0; t < 2; ++t)
+            renders[t] = render("dofThreads" + threads[t], 60, 60, topCamera().setApertureSize(60)
+                            .setFocalDistance(970).setSqrtApertureRays(2),
+                    new RayTracerBasic(shadedScene("dof threads " + threads[t], true)), 3, false, threads[t]);
+        assertSamePicture(renders[0], renders[1], "TC02: 1 and 3 threads must give the same picture");
     }
 }

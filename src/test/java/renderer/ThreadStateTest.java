@@ -1,10 +1,14 @@
 package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+
+import primitives.Color;
 
 /**
  * Unit tests for {@link ThreadState}: a rendering thread's stream, counters and reused sample room.
@@ -48,5 +52,62 @@ class ThreadStateTest {
         new JitteredGrid(1).sample(new SplitMix64(2), single);
         assertTrue(single[0] >= 0 && single[0] < 1 && single[1] >= 0 && single[1] < 1,
                 "TC11: the single point must lie in [0,1)²");
+    }
+
+    /**
+     * Test method for {@link ThreadState#pixelPoints(JitteredGrid)} and {@link ThreadState#aperturePoints(JitteredGrid)}:
+     * room of their own, apart from the shadows' and from each other, reused.
+     */
+    @Test
+    void testPixelAndAperturePoints() {
+        ThreadState state = new ThreadState(new SplitMix64(1));
+        JitteredGrid grid = new JitteredGrid(4);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a 4 × 4 grid gets room for at least 32 coordinates in each, three different arrays
+        double[] pixel = state.pixelPoints(grid);
+        double[] aperture = state.aperturePoints(grid);
+        double[] shadow = state.points(grid);
+        assertTrue(pixel.length >= 32 && aperture.length >= 32, "TC01: a 4 × 4 grid needs 32 coordinates");
+        assertNotSame(pixel, aperture, "TC01: pixel and aperture points must not share an array");
+        assertNotSame(pixel, shadow, "TC01: pixel and shadow points must not share an array");
+        assertNotSame(aperture, shadow, "TC01: aperture and shadow points must not share an array");
+        // TC02: asked again (a smaller 2 × 2 grid), each array is reused
+        assertSame(pixel, state.pixelPoints(new JitteredGrid(2)), "TC02: the pixel points must be reused");
+        assertSame(aperture, state.aperturePoints(new JitteredGrid(2)), "TC02: the aperture points must be reused");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a larger grid (10 × 10) gets arrays of at least 200 coordinates
+        assertTrue(state.pixelPoints(new JitteredGrid(10)).length >= 200, "TC11: 10 × 10 pixel points");
+        assertTrue(state.aperturePoints(new JitteredGrid(10)).length >= 200, "TC11: 10 × 10 aperture points");
+    }
+
+    /**
+     * Test method for {@link ThreadState#startLattice(int)}, {@link ThreadState#latticeColor(int)} and
+     * {@link ThreadState#keepLatticeColor(int, Color)}: a pixel's colours, forgotten at the next pixel.
+     */
+    @Test
+    void testLattice() {
+        ThreadState state = new ThreadState(new SplitMix64(1));
+        Color red = new Color(200, 0, 0);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a new lattice of 9 points knows none; a colour kept at point 4 is given back
+        state.startLattice(9);
+        assertNull(state.latticeColor(4), "TC01: a new lattice must not know point 4");
+        assertSame(red, state.keepLatticeColor(4, red), "TC01: keeping a colour returns it");
+        assertSame(red, state.latticeColor(4), "TC01: point 4 must give the colour kept");
+        assertNull(state.latticeColor(3), "TC01: point 3 was not kept");
+        // TC02: the next pixel's lattice (25 points, larger) forgets it
+        state.startLattice(25);
+        assertNull(state.latticeColor(4), "TC02: the next pixel must not see the last pixel's point 4");
+        state.keepLatticeColor(24, red);
+        assertSame(red, state.latticeColor(24), "TC02: the larger lattice keeps its last point");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a smaller lattice (1 point) after a larger one forgets too
+        state.startLattice(1);
+        assertNull(state.latticeColor(0), "TC11: a one-point lattice must start empty");
+        assertNull(state.latticeColor(24), "TC11: the last pixel's point 24 must be forgotten");
     }
 }

@@ -38,7 +38,7 @@ class RenderSettingsTest {
         assertEquals(5, CUSTOM.sqrtGlossRays(), "TC01: the five-count constructor must give 5");
         // TC02: withSqrtGlossRays(8) changes only sqrtGlossRays, and the other withXxx keep it
         RenderSettings eight = CUSTOM.withSqrtGlossRays(8);
-        assertEquals(new RenderSettings(true, true, 4, 3, 7L, 8), eight, "TC02: only sqrtGlossRays must change");
+        assertEquals(new RenderSettings(true, true, 4, 3, 7L, 8, false), eight, "TC02: only sqrtGlossRays must change");
         assertEquals(8, eight.withSoftShadows(false).withAdaptiveSoftShadows(false).withSqrtBeamNum(2)
                 .withAntiAliasing(2).withSeed(1).sqrtGlossRays(), "TC02: the other withXxx must keep sqrtGlossRays");
         // TC03: applyTo passes it to the ray tracer
@@ -53,7 +53,7 @@ class RenderSettingsTest {
         // TC12: 0 and 1001 are rejected naming sqrtGlossRays
         assertMessage(assertThrows(IllegalArgumentException.class, () -> CUSTOM.withSqrtGlossRays(0),
                 "TC12: 0 must be rejected"), "sqrtGlossRays", "TC12");
-        assertThrows(IllegalArgumentException.class, () -> new RenderSettings(false, false, 9, 1, 0, 1001),
+        assertThrows(IllegalArgumentException.class, () -> new RenderSettings(false, false, 9, 1, 0, 1001, false),
                 "TC12: 1001 must be rejected");
     }
 
@@ -191,5 +191,32 @@ class RenderSettingsTest {
         assertEquals(1, tracer1.getSqrtBeamNum(), "TC12: sqrtBeamNum must be 1");
         assertEquals(1, render1.getAntiAliasing(), "TC12: anti-aliasing must be back to 1");
         assertEquals(0L, tracer1.getSeed(), "TC12: the seed must be 0");
+    }
+
+    /**
+     * Test method for {@link RenderSettings#withAdaptiveSuperSampling(boolean)}, the five-argument constructor and
+     * {@link RenderSettings#applyTo(Render)} with adaptive super-sampling.
+     */
+    @Test
+    void testAdaptiveSuperSampling() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: off by default; withAdaptiveSuperSampling(true) turns it on and keeps the rest (custom settings)
+        assertFalse(RenderSettings.DEFAULT.adaptiveSuperSampling(), "TC01: adaptive super-sampling must be off");
+        RenderSettings adaptive = CUSTOM.withAdaptiveSuperSampling(true);
+        assertEquals(new RenderSettings(true, true, 4, 3, 7L, RayTracerBase.DEFAULT_SQRT_GLOSS_RAYS, true), adaptive, "TC01: only the flag must change");
+        // TC02: the other with-methods keep it on
+        assertTrue(adaptive.withSoftShadows(false).withAdaptiveSoftShadows(false).withSqrtBeamNum(2)
+                .withAntiAliasing(5).withSeed(1).adaptiveSuperSampling(), "TC02: the flag must be kept");
+        // TC03: applied to a render, and turned off again by DEFAULT
+        Render render = new Render().setRayTracer(new RayTracerBasic(new Scene("adaptive")));
+        adaptive.applyTo(render);
+        assertTrue(render.isAdaptiveSuperSampling(), "TC03: adaptive super-sampling must be on in the render");
+        RenderSettings.DEFAULT.applyTo(render);
+        assertFalse(render.isAdaptiveSuperSampling(), "TC03: adaptive super-sampling must be off again");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the five-argument constructor is the six-argument one with adaptive super-sampling off
+        assertEquals(new RenderSettings(true, true, 4, 3, 7L, RayTracerBase.DEFAULT_SQRT_GLOSS_RAYS, false), CUSTOM, "TC11: five arguments mean off");
+        assertEquals(CUSTOM, adaptive.withAdaptiveSuperSampling(false), "TC11: turned off again");
     }
 }

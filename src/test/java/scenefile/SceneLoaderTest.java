@@ -180,6 +180,48 @@ class SceneLoaderTest {
         assertColor(Color.BLACK, empty.scene().background, "TC11: black background by default");
     }
 
+    /**
+     * Test method for {@link SceneLoader#load(Path)}: depth of field on the camera and adaptive super-sampling in
+     * the render settings.
+     */
+    @Test
+    void testLoadDepthOfFieldAndAdaptiveSuperSampling() {
+        Picture picture = SceneLoader.load(file("lens.xml", """
+                <scene>
+                  <camera vp-distance="80" aperture="2.5" focal-distance="640" aperture-rays="4"/>
+                  <render anti-aliasing="4" adaptive-super-sampling="true"/>
+                </scene>
+                """));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: aperture 2.5, focused at 640, 4 × 4 aperture rays
+        Camera camera = picture.camera();
+        assertEquals(2.5, camera.getApertureSize(), 1e-12, "TC01: wrong aperture");
+        assertEquals(640, camera.getFocalDistance(), 1e-12, "TC01: wrong focal distance");
+        assertEquals(4, camera.getSqrtApertureRays(), "TC01: wrong aperture rays");
+        // TC02: adaptive super-sampling on, with 4 × 4 anti-aliasing
+        assertEquals(RenderSettings.DEFAULT.withAntiAliasing(4).withAdaptiveSuperSampling(true), picture.settings(),
+                "TC02: wrong settings");
+        // TC03: a negative aperture names the setting, at the camera's line
+        assertBadFile(file("negative-aperture.xml", "<scene>\n  <camera aperture=\"-1\"/>\n</scene>\n"), 2,
+                "aperture size must not be negative", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: no lens attributes: a pinhole camera, the view plane (80) in focus, 9 aperture rays; no adaptive
+        Picture plain = SceneLoader.load(file("no-lens.xml", "<scene><camera vp-distance=\"80\"/><render/></scene>"));
+        assertFalse(plain.camera().hasAperture(), "TC11: a pinhole camera by default");
+        assertEquals(80, plain.camera().getFocalDistance(), 1e-12, "TC11: the view plane is in focus by default");
+        assertEquals(Camera.DEFAULT_SQRT_APERTURE_RAYS, plain.camera().getSqrtApertureRays(), "TC11: 9 aperture rays");
+        assertFalse(plain.settings().adaptiveSuperSampling(), "TC11: adaptive super-sampling is off by default");
+        // TC12: focal distance 0 and 1001 aperture rays are refused, naming them
+        assertBadFile(file("zero-focus.xml", "<scene>\n  <camera focal-distance=\"0\"/>\n</scene>\n"), 2,
+                "focal distance must be positive", "TC12");
+        assertBadFile(file("many-aperture-rays.xml", "<scene>\n  <camera aperture-rays=\"1001\"/>\n</scene>\n"), 2,
+                "attribute 'aperture-rays' must be between 1 and 1000", "TC12");
+        // TC13: aperture rays 0 is refused by the schema
+        assertBadFile(file("no-aperture-rays.xml", "<scene>\n  <camera aperture-rays=\"0\"/>\n</scene>\n"), 2,
+                "attribute 'aperture-rays' of <camera> must be a whole number, 1 or more", "TC13");
+    }
+
     /** Test method for {@link SceneLoader#load(Path)}: every body, materials, emission, groups and meshes. */
     @Test
     void testLoadBodies() {

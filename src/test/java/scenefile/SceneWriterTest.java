@@ -223,6 +223,9 @@ class SceneWriterTest {
         assertEquals(camera.getWidth(), loaded.getWidth(), message + ": view plane width");
         assertEquals(camera.getHeight(), loaded.getHeight(), message + ": view plane height");
         assertEquals(camera.getDistance(), loaded.getDistance(), message + ": view plane distance");
+        assertEquals(camera.getApertureSize(), loaded.getApertureSize(), message + ": aperture");
+        assertEquals(camera.getFocalDistance(), loaded.getFocalDistance(), message + ": focal distance");
+        assertEquals(camera.getSqrtApertureRays(), loaded.getSqrtApertureRays(), message + ": aperture rays");
         Scene scene = expected.scene();
         Scene other = actual.scene();
         assertSame(scene.background, other.background, message + ": background");
@@ -380,6 +383,41 @@ class SceneWriterTest {
         assertFalse(plain.contains("gloss-rays"), "TC11: the default gloss-rays must not be written");
         assertEquals(1, plain.split("kG=", -1).length - 1, "TC11: only the glossy floor may have a kG");
         assertEquals(1, plain.split("kB=", -1).length - 1, "TC11: only the blurry pane may have a kB");
+    }
+
+    /**
+     * Test method for {@link SceneWriter#write(Picture, Path)} and {@link SceneLoader#load(Path)}: depth of field
+     * and adaptive super-sampling are written, read back and render the same pixels.
+     */
+    @Test
+    void testRoundTripDepthOfFieldAndAdaptive() {
+        Picture base = everything().withSize(30, 30);
+        base.camera().setApertureSize(4).setFocalDistance(450).setSqrtApertureRays(2);
+        Picture picture = base.withSettings(new RenderSettings(true, false, 2, 2, 7).withAdaptiveSuperSampling(true));
+        Path file = FOLDER.resolve("lens.xml");
+        SceneWriter.write(picture, file);
+        Picture loaded = SceneLoader.load(file);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the camera's lens and the adaptive flag are written with the camera and the render settings
+        String xml = SceneWriter.toXml(picture);
+        assertTrue(xml.contains(" vp-distance=\"500\" aperture=\"4\" focal-distance=\"450\" aperture-rays=\"2\"/>"),
+                "TC01: wrong camera:\n" + xml);
+        assertTrue(xml.contains(" seed=\"7\" adaptive-super-sampling=\"true\"/>"), "TC01: wrong render:\n" + xml);
+        // TC02: read back with the same values, rendering the same pixels
+        assertSamePicture(picture, loaded, "TC02");
+        assertEquals(0, differentPixels(render(picture, "lens-java"), render(loaded, "lens-file")),
+                "TC02: the loaded picture renders other pixels");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a focal distance without an aperture is kept (it is a setting of its own)
+        Camera focusedPinhole = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0))
+                .setVpSize(500, 500).setVpDistance(100).setFocalDistance(300);
+        String pinholeXml = SceneWriter.toXml(new Picture("focus", 500, 500, new Scene("focus"), focusedPinhole));
+        assertTrue(pinholeXml.contains("<camera focal-distance=\"300\"/>"), "TC11: wrong camera:\n" + pinholeXml);
+        // TC12: the defaults (no aperture, the view plane in focus, 9 rays, not adaptive) write nothing
+        assertFalse(SceneWriter.toXml(everything()).contains("aperture"), "TC12: a pinhole camera writes no lens");
+        assertFalse(SceneWriter.toXml(everything()).contains("adaptive-super"), "TC12: adaptive off writes nothing");
     }
 
     /**
