@@ -368,13 +368,7 @@ public class Render {
                 return sample(state, j, i, 0.5, 0.5);
             if (adaptiveSuperSampling)
                 return new AdaptivePixel(state, j, i).color();
-            double[] points = state.pixelPoints(pixelGrid);
-            pixelGrid.sample(state.random, points);
-            int count = pixelGrid.getSamplesCount();
-            Color color = Color.BLACK;
-            for (int s = 0; s < count; ++s)
-                color = color.add(sample(state, j, i, points[2 * s], points[2 * s + 1]));
-            return color.reduce(count);
+            return average(pixelGrid, state.pixelPoints(pixelGrid), state, (dx, dy) -> sample(state, j, i, dx, dy));
         }
 
         /**
@@ -387,14 +381,26 @@ public class Render {
                 return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i, dx, dy));
             }
             JitteredGrid apertureGrid = camera.getApertureGrid();
-            double[] points = state.aperturePoints(apertureGrid);
-            apertureGrid.sample(state.random, points);
-            int count = apertureGrid.getSamplesCount();
+            state.primaryRays += apertureGrid.getSamplesCount();
+            return average(apertureGrid, state.aperturePoints(apertureGrid), state,
+                    (u, v) -> rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v)));
+        }
+
+        /**
+         * The average of the colours at a grid's jittered points, drawn from the pixel's random stream.
+         *
+         * @param grid    the grid
+         * @param points  room for its points
+         * @param state   the thread's state, its stream the pixel's
+         * @param colorAt the colour at a point of the unit square
+         * @return the average colour
+         */
+        private static Color average(JitteredGrid grid, double[] points, ThreadState state, PointColor colorAt) {
+            grid.sample(state.random, points);
+            int count = grid.getSamplesCount();
             Color color = Color.BLACK;
             for (int s = 0; s < count; ++s)
-                color = color.add(rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy,
-                        points[2 * s], points[2 * s + 1])));
-            state.primaryRays += count;
+                color = color.add(colorAt.at(points[2 * s], points[2 * s + 1]));
             return color.reduce(count);
         }
 
@@ -453,6 +459,12 @@ public class Render {
                         || Math.abs(a.getG() - b.getG()) > ADAPTIVE_THRESHOLD
                         || Math.abs(a.getB() - b.getB()) > ADAPTIVE_THRESHOLD;
             }
+        }
+
+        /** The colour seen at a point (u, v) of the unit square: of a pixel, or of the camera's aperture. */
+        @FunctionalInterface
+        private interface PointColor {
+            Color at(double u, double v);
         }
 
         private void printProgress() {
