@@ -4,7 +4,8 @@ import geometries.BoundingVolumeHierarchy;
 
 /**
  * What one rendering thread keeps for itself in a ray tracer, so that the per-pixel path takes no
- * lock: the current pixel's random stream, room for sample points, and the thread's ray counts.
+ * lock: the current pixel's random stream, room for sample points and shadow rays, and the thread's ray
+ * counts.
  */
 final class ThreadState {
     /** The random stream of the pixel being rendered. */
@@ -18,6 +19,7 @@ final class ThreadState {
     private double[] points = new double[0];
     private BoundingVolumeHierarchy queried;
     private BoundingVolumeHierarchy.Query query;
+    private RayTracerBasic.LightSquare lightSquare;
 
     /**
      * Creates the state of a thread.
@@ -39,6 +41,13 @@ final class ThreadState {
         if (points.length < length)
             points = new double[length];
         return points;
+    }
+
+    /** {@return this thread's light square, set again for every lit point: the shadow path allocates nothing} */
+    RayTracerBasic.LightSquare lightSquare() {
+        if (lightSquare == null)
+            lightSquare = new RayTracerBasic.LightSquare();
+        return lightSquare;
     }
 
     /**

@@ -1423,6 +1423,8 @@ class BoundingVolumeHierarchyTest {
                 ++counts.few;
             if (thickness > 0)
                 ++counts.thick;
+            List<Ray> rays = new ArrayList<>();
+            List<Double> distances = new ArrayList<>();
             for (int r = 0; r < 40; ++r) {
                 Point3D target = squarePoint(rnd, c, a, b);
                 Point3D start = stray(rnd, apex, thickness);
@@ -1451,7 +1453,52 @@ class BoundingVolumeHierarchyTest {
                 ++counts.rays;
                 if (transmittance(bvh, ray, distance, 0, treeQuery) < 1)
                     ++counts.darkened;
+                rays.add(ray);
+                distances.add(distance);
             }
+            assertPacket(bvh, query, treeQuery, rays, distances, opaque, bundleLabel);
+        }
+    }
+
+    /**
+     * Asserts that the rays of a bundle traced as one packet, after its gather, each get the
+     * transmittance the tree gives them alone, with the cut-off and without.
+     *
+     * @param bvh       the hierarchy
+     * @param query     the scratch space, as the gather left it
+     * @param treeQuery another scratch space, for the rays alone
+     * @param rays      the rays
+     * @param distances their distances to the square
+     * @param opaque    whether the answers must be equal to the bit (else within 1e-12)
+     * @param label     the bundle's label
+     */
+    private static void assertPacket(BoundingVolumeHierarchy bvh, Query query, Query treeQuery, List<Ray> rays,
+                                     List<Double> distances, boolean opaque, Supplier<String> label) {
+        for (double minK : new double[] { MIN_K, 0 }) {
+            fillPacket(query, rays, distances);
+            bvh.gatheredTransmittances(minK, query);
+            for (int r = 0; r < rays.size(); ++r) {
+                double expected = transmittance(bvh, rays.get(r), distances.get(r), minK, treeQuery);
+                int number = r;
+                assertEquals(expected, query.getTransmittance(r), opaque ? 0 : 1e-12,
+                        () -> label.get() + " packet ray " + number + " " + rays.get(number) + " (minK " + minK + ")");
+            }
+        }
+    }
+
+    /**
+     * Empties a query's packet and puts rays in it.
+     *
+     * @param query     the scratch space
+     * @param rays      the rays
+     * @param distances their distances
+     */
+    private static void fillPacket(Query query, List<Ray> rays, List<Double> distances) {
+        query.clearPacket();
+        for (int r = 0; r < rays.size(); ++r) {
+            Point3D p = rays.get(r).getP0();
+            Vector d = rays.get(r).getDir();
+            query.addToPacket(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), distances.get(r));
         }
     }
 
@@ -1482,7 +1529,8 @@ class BoundingVolumeHierarchyTest {
         // TC01: opaque random scenes (with planes, a tube, cylinders, squares, bodies that are not
         // Geometry, nested composites, a dense mesh): 60 bundles each from random apexes on (thick), in,
         // near and away from the bodies to random narrow and wide squares, 40 rays each:
-        // gatheredTransmittance = transmittance, 0 or 1
+        // gatheredTransmittance = transmittance, 0 or 1, and so is the answer of each ray of the
+        // bundle traced as one packet (gatheredTransmittances)
         Random rnd = new Random(7031);
         GatherCounts opaque = new GatherCounts();
         for (int s : new int[] { 0, 2, 3, 5, 6, 7, 8, 9, 13, 15, 17, 19 })
@@ -1492,7 +1540,7 @@ class BoundingVolumeHierarchyTest {
         assertCounts(opaque, "TC01");
 
         // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque), the hierarchy built on 3
-        // threads: equal within 1e-12
+        // threads: equal within 1e-12, one by one and as a packet
         double[] kts = { 0.5, 0.9, 0.25, 1, 0.75, 0.999, 0.5, 0.9, 0 };
         GatherCounts transparent = new GatherCounts();
         for (int s : new int[] { 0, 2, 4, 5, 6, 8, 9, 13, 15, 18, 19, -1, -1 }) {
@@ -1519,6 +1567,119 @@ class BoundingVolumeHierarchyTest {
         assertTrue(counts.darkened >= 500 && counts.rays - counts.darkened >= 500,
                 tc + ": too few darkened (" + counts.darkened + ") or open (" + (counts.rays - counts.darkened)
                         + ") rays of " + counts.rays);
+    }
+
+    /**
+     * Two plates of 10 × 10 unit cells, each cell cut into two triangles along its diagonal, over
+     * x, y in [−5, 5]: a transparent one (kT 0.5) at z = 0 and an opaque one at z = 2.
+     *
+     * @return the composite of the 400 triangles
+     */
+    private static Geometries twoPlates() {
+        Geometries plates = new Geometries();
+        Material glass = new Material().setKt(0.5);
+        Material opaque = new Material();
+        for (double z : new double[] { 0, 2 })
+            for (int i = -5; i < 5; ++i)
+                for (int j = -5; j < 5; ++j) {
+                    Material material = z == 0 ? glass : opaque;
+                    plates.add(new Triangle(new Point3D(i, j, z), new Point3D(i + 1, j, z), new Point3D(i + 1, j + 1, z))
+                                    .setMaterial(material),
+                            new Triangle(new Point3D(i, j, z), new Point3D(i + 1, j + 1, z), new Point3D(i, j + 1, z))
+                                    .setMaterial(material));
+                }
+        return plates;
+    }
+
+    /**
+     * Traces a packet from an apex to the points of a square at height z on a 3 × 3 grid (−0.8, 0
+     * and 0.8 of each half-side, so that no ray crosses the plates of {@link #twoPlates} on an edge),
+     * after gathering its bundle.
+     *
+     * @param bvh   the hierarchy
+     * @param query the scratch space
+     * @param apex  the rays' origin
+     * @param z     the height of the square (centre (0.1, 0.2, z), half-sides 4)
+     * @return the rays' answers
+     */
+    private static double[] plateBundle(BoundingVolumeHierarchy bvh, Query query, Point3D apex, double z) {
+        assertTrue(query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), 0.1, 0.2, z, 4, 0, 0, 0, 4, 0, 0),
+                "the bundle's pyramid must be set");
+        bvh.gather(query);
+        List<Ray> rays = new ArrayList<>();
+        List<Double> distances = new ArrayList<>();
+        for (double s : new double[] { -3.2, 0, 3.2 })
+            for (double t : new double[] { -3.2, 0, 3.2 }) {
+                Point3D target = new Point3D(0.1 + s, 0.2 + t, z);
+                rays.add(new Ray(apex, target.subtract(apex)));
+                distances.add(apex.distance(target));
+            }
+        fillPacket(query, rays, distances);
+        bvh.gatheredTransmittances(MIN_K, query);
+        double[] answers = new double[rays.size()];
+        for (int r = 0; r < answers.length; ++r)
+            answers[r] = query.getTransmittance(r);
+        return answers;
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittances},
+     * {@link BoundingVolumeHierarchy#transmittances} and the packet of a {@link Query}: a closed
+     * bundle of many bodies, transparent blockers and blockers beyond the light; the packet's bounds.
+     */
+    @Test
+    void testPackets() {
+        Geometries plates = twoPlates();
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(plates);
+        Query query = bvh.newQuery();
+        Point3D apex = new Point3D(0.05, 0.1, -5);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the light between the plates, more than 32 triangles in the pyramid (a subtree is
+        // walked as a packet): each ray passes the transparent plate once, 0.5, and the opaque plate
+        // beyond the light does not count
+        for (double answer : plateBundle(bvh, query, apex, 1))
+            assertEquals(0.5, answer, 1e-12, "TC01: through the transparent plate only");
+        assertTrue(boxesMeeting(plates, query.getFrustum()) > 32, "TC01: more than 32 triangles must meet the pyramid");
+        // TC02: the light above both plates: every ray is blocked, 0
+        for (double answer : plateBundle(bvh, query, apex, 3))
+            assertEquals(0, answer, 0, "TC02: blocked by the opaque plate");
+        // TC03: the light below both plates: nothing in the way, 1
+        for (double answer : plateBundle(bvh, query, apex, -1))
+            assertEquals(1, answer, 0, "TC03: nothing before the light");
+        // TC04: transmittances walks the whole tree with each ray of the packet: the same answers
+        // as transmittance, here for 100 random rays (more than the packet's first room for 16)
+        Random rnd = new Random(16);
+        List<Ray> rays = new ArrayList<>();
+        List<Double> distances = new ArrayList<>();
+        for (int r = 0; r < 100; ++r) {
+            rays.add(new Ray(randomPoint(rnd, Point3D.ZERO, 6), randomUnit(rnd)));
+            distances.add(10 * rnd.nextDouble());
+        }
+        fillPacket(query, rays, distances);
+        assertEquals(100, query.getPacketSize(), "TC04: the packet holds every ray added");
+        bvh.transmittances(MIN_K, query);
+        for (int r = 0; r < rays.size(); ++r)
+            assertEquals(transmittance(bvh, rays.get(r), distances.get(r), MIN_K, bvh.newQuery()),
+                    query.getTransmittance(r), 0, "TC04: ray " + r);
+
+        // ===== Boundary Values Tests =====
+        // TC11: a cleared packet holds no ray, and tracing it answers nothing
+        query.clearPacket();
+        assertEquals(0, query.getPacketSize(), "TC11: a cleared packet is empty");
+        bvh.transmittances(MIN_K, query);
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(0),
+                "TC11: an empty packet has no answer"), "packet", "TC11");
+        // TC12: a packet of one ray: the ray's own answer (the light just before the transparent plate: 1)
+        plateBundle(bvh, query, apex, 1);
+        query.clearPacket();
+        query.addToPacket(0.05, 0.1, -5, 0, 0, 1, 5 - 1e-6);
+        bvh.gatheredTransmittances(MIN_K, query);
+        assertEquals(1, query.getTransmittance(0), 0, "TC12: the light just before the plate");
+        // TC13: answers only for rays 0 to size − 1
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(-1),
+                "TC13: ray −1"), "packet", "TC13");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(1),
+                "TC13: ray past the packet"), "packet", "TC13");
     }
 
     /**
