@@ -427,8 +427,9 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Gathers the bodies a bundle of shadow rays may meet, for {@link #gatheredTransmittance}: the
-     * unbounded bodies and the tree's bodies whose boxes (planes, for unbounded bodies) meet the
-     * query's {@link Query#getFrustum() frustum} (set it first). When more than a few of the tree's
+     * unbounded bodies and the tree's bodies that may meet the query's
+     * {@link Query#getFrustum() frustum} (set it first): the planes of unbounded ones and of
+     * polygons must cross it, and the boxes of bounded ones meet it. When more than a few of the tree's
      * bodies meet it, their smallest subtree is kept instead. A brute-force {@link #scan} gathers
      * every body.
      *
@@ -486,10 +487,13 @@ public final class BoundingVolumeHierarchy {
         }
     }
 
-    /** Adds a leaf's bodies whose boxes meet the frustum; false when there is no room for them. */
+    /**
+     * Adds a leaf's bodies that may meet the frustum (their boxes first, then the bodies' own test,
+     * for a polygon its plane); false when there is no room for them.
+     */
     private boolean gatherLeaf(Query query, int first, int count) {
         for (int b = first; b < first + count; ++b)
-            if (query.frustum.meetsBox(bodyBounds, 6 * b)) {
+            if (query.frustum.meetsBox(bodyBounds, 6 * b) && bodies[b].mayMeet(query.frustum)) {
                 if (query.gatheredCount == MAX_GATHERED)
                     return false;
                 query.gathered[query.gatheredCount++] = b;

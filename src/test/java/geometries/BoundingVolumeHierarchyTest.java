@@ -1306,23 +1306,36 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
-     * How many of a composite's bounded bodies (the tree's bodies) have boxes the frustum meets: when
-     * more than {@value #MAX_GATHERED}, gather keeps a subtree instead of the bodies.
+     * How many of a composite's bounded bodies (the tree's bodies) may meet the frustum: their boxes
+     * meet it and their own test ({@link Geometry#mayMeet}, for a polygon its plane) says they may.
+     * When more than {@value #MAX_GATHERED}, gather keeps a subtree instead of the bodies.
      *
      * @param item    the composite or body
      * @param frustum the frustum, set
      * @return the count
      */
     private static int boxesMeeting(Intersectable item, ShadowFrustum frustum) {
+        return meeting(item, frustum, true);
+    }
+
+    /**
+     * How many of a composite's bounded bodies have boxes the frustum meets, or also pass their own test.
+     *
+     * @param item    the composite or body
+     * @param frustum the frustum, set
+     * @param ownTest whether the bodies' own test counts too
+     * @return the count
+     */
+    private static int meeting(Intersectable item, ShadowFrustum frustum, boolean ownTest) {
         if (item instanceof Geometries composite) {
             int count = 0;
             for (Intersectable child : composite.getGeometries())
-                count += boxesMeeting(child, frustum);
+                count += meeting(child, frustum, ownTest);
             return count;
         }
         if (item instanceof Geometry geometry) {
             double[] box = geometry.bounds();
-            return box != null && frustum.meetsBox(box, 0) ? 1 : 0;
+            return box != null && frustum.meetsBox(box, 0) && (!ownTest || geometry.mayMeet(frustum)) ? 1 : 0;
         }
         return 0;
     }
@@ -1346,15 +1359,17 @@ class BoundingVolumeHierarchyTest {
     /**
      * How often gather gave each kind of answer, and how many rays were blocked or dimmed. The two
      * kinds of true cannot be told apart through the API: they are told by how many of the tree's
-     * boxes meet the frustum.
+     * bodies may meet the frustum.
      */
     private static final class GatherCounts {
         /** gather gave false. */
         private int none;
-        /** gather gave true, at most 32 of the tree's boxes meet the frustum: the bodies are kept. */
+        /** gather gave true, at most 32 of the tree's bodies may meet the frustum: the bodies are kept. */
         private int few;
-        /** gather gave true, more than 32 of the tree's boxes meet the frustum: a subtree is kept. */
+        /** gather gave true, more than 32 of the tree's bodies may meet the frustum: a subtree is kept. */
         private int subtree;
+        /** bundles whose pyramid meets some boxes but no polygon's plane among them. */
+        private int planeCulled;
         /** bundles with a thickness (apex on a body's surface). */
         private int thick;
         private int rays;
@@ -1406,6 +1421,8 @@ class BoundingVolumeHierarchyTest {
                     a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), thickness))
                 continue; // a flat pyramid: the renderer walks the tree instead
             int meeting = boxesMeeting(scene.geometries(), frustum);
+            if (meeting == 0 && meeting(scene.geometries(), frustum, false) > 0)
+                ++counts.planeCulled;
             boolean found = bvh.gather(query);
             int bundleNumber = bundle;
             Point3D origin = apex;
@@ -1414,8 +1431,8 @@ class BoundingVolumeHierarchyTest {
                     + ", a " + a + ", b " + b + ", thickness " + thick + ", gathered " + found + ", " + meeting
                     + " boxes meet)";
             if (!found) {
-                // a body whose box meets the frustum is in nodes whose boxes meet it: gathered
-                assertEquals(0, meeting, () -> bundleLabel.get() + ": nothing gathered though boxes meet");
+                // a body that may meet the frustum (its box and its own test) is in nodes whose boxes meet it: gathered
+                assertEquals(0, meeting, () -> bundleLabel.get() + ": nothing gathered though bodies may meet");
                 ++counts.none;
             } else if (meeting > MAX_GATHERED)
                 ++counts.subtree;
@@ -1564,6 +1581,8 @@ class BoundingVolumeHierarchyTest {
         assertTrue(counts.few >= 100, tc + ": too few bundles with a few bodies gathered (" + counts.few + ")");
         assertTrue(counts.subtree >= 50, tc + ": too few bundles meeting more than 32 boxes (" + counts.subtree + ")");
         assertTrue(counts.thick >= 100, tc + ": too few thick bundles (" + counts.thick + ")");
+        assertTrue(counts.planeCulled >= 10, tc + ": too few bundles whose polygons were culled by their planes ("
+                + counts.planeCulled + ")");
         assertTrue(counts.darkened >= 500 && counts.rays - counts.darkened >= 500,
                 tc + ": too few darkened (" + counts.darkened + ") or open (" + (counts.rays - counts.darkened)
                         + ") rays of " + counts.rays);
