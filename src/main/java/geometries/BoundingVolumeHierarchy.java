@@ -31,9 +31,10 @@ import static primitives.Util.requireNonNull;
  * are intersectables that are not {@link Geometry}s.
  * <p>
  * The shadow rays of one soft shadow can be traced as a bundle: {@link #gather} walks the tree once
- * with the bundle's pyramid (a {@link ShadowFrustum}) and keeps the few bodies it meets, or their
- * smallest subtree when they are many; {@link #gatheredTransmittance} then tests each ray against
- * those alone.
+ * with the bundle's pyramid (a {@link ShadowFrustum}) and keeps the few bodies that may meet it, or
+ * their smallest subtree when they are many; {@link #gatheredTransmittance} then tests a ray against
+ * those alone, and {@link #gatheredTransmittances} all the rays of the bundle at once, walking a kept
+ * subtree as one packet.
  * <p>
  * Queries take a {@link Query}, the caller's per-thread scratch space, and allocate nothing but
  * the {@link GeoPoint} a closest-hit query returns.
@@ -79,8 +80,8 @@ public final class BoundingVolumeHierarchy {
     private final int depth;
 
     /**
-     * Per-thread scratch space of queries: the traversal stack and the running result. Get one from
-     * {@link #newQuery()} and use it on one thread at a time.
+     * Per-thread scratch space of queries: the traversal stack, the running result and a packet of
+     * shadow rays. Get one from {@link #newQuery()} and use it on one thread at a time.
      */
     public static final class Query {
         private final int[] stack;
