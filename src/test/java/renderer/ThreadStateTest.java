@@ -1,13 +1,16 @@
 package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
 /**
- * Unit tests for {@link ThreadState}: a rendering thread's stream, counters and reused sample room.
+ * Unit tests for {@link ThreadState}: a rendering thread's stream, counters, reused sample room and
+ * light square.
  */
 class ThreadStateTest {
 
@@ -48,5 +51,21 @@ class ThreadStateTest {
         new JitteredGrid(1).sample(new SplitMix64(2), single);
         assertTrue(single[0] >= 0 && single[0] < 1 && single[1] >= 0 && single[1] < 1,
                 "TC11: the single point must lie in [0,1)²");
+    }
+    /** Test method for {@link ThreadState#lightSquare()}: one light square per thread, reused. */
+    @Test
+    void testLightSquare() {
+        ThreadState state = new ThreadState(new SplitMix64(1));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the same light square on every call
+        RayTracerBasic.LightSquare square = state.lightSquare();
+        assertNotNull(square, "TC01: a state must have a light square");
+        assertSame(square, state.lightSquare(), "TC01: the light square must be reused");
+
+        // ===== Boundary Values Tests =====
+        // TC11: another thread's state has a light square of its own
+        assertNotSame(square, new ThreadState(new SplitMix64(1)).lightSquare(),
+                "TC11: two states must not share a light square");
     }
 }
