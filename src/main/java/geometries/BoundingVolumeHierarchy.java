@@ -64,6 +64,8 @@ public final class BoundingVolumeHierarchy {
     private final double[] bodyBounds;
     /** Whether each body of the tree is a plain {@link Triangle}, tested from {@link #triangleData}. */
     private final boolean[] triangle;
+    /** Whether each body of the tree is a {@link Polygon}: {@link #gather} then also asks its plane. */
+    private final boolean[] polygon;
     /** The intersection data of the tree's triangles, {@link Triangle#DATA_LENGTH} doubles per body. */
     private final double[] triangleData;
     private final Geometry[] unbounded;
@@ -122,6 +124,16 @@ public final class BoundingVolumeHierarchy {
         /** {@return the pyramid of the shadow bundle the next {@link #gather} looks at} */
         public ShadowFrustum getFrustum() {
             return frustum;
+        }
+
+        /**
+         * Whether the last {@link #gather} kept a subtree, its bodies too many to keep one by one: the
+         * bundle's rays are then best traced together, by {@link #gatheredTransmittances}.
+         *
+         * @return true when a subtree was kept
+         */
+        public boolean isSubtreeGathered() {
+            return gatheredCount < 0;
         }
 
         /** Empties the packet of rays {@link #gatheredTransmittances} traces. */
@@ -213,6 +225,7 @@ public final class BoundingVolumeHierarchy {
         this.depth = builder.depth;
         this.bodies = new Geometry[flat.length];
         this.triangle = new boolean[flat.length];
+        this.polygon = new boolean[flat.length];
         this.triangleData = new double[Triangle.DATA_LENGTH * flat.length];
         runInChunks(flat.length, threads, (from, to) -> placeBodies(flat, builder.order, from, to));
     }
@@ -230,6 +243,7 @@ public final class BoundingVolumeHierarchy {
         for (int b = from; b < to; ++b) {
             Geometry body = flat[order[b]];
             bodies[b] = body;
+            polygon[b] = body instanceof Polygon;
             if (body.getClass() == Triangle.class) {
                 triangle[b] = true;
                 ((Triangle) body).copyData(triangleData, Triangle.DATA_LENGTH * b);
@@ -489,12 +503,12 @@ public final class BoundingVolumeHierarchy {
     }
 
     /**
-     * Adds a leaf's bodies that may meet the frustum (their boxes first, then the bodies' own test,
-     * for a polygon its plane); false when there is no room for them.
+     * Adds a leaf's bodies that may meet the frustum (their boxes, and for a polygon its plane; other
+     * bodies are not read, only their boxes); false when there is no room for them.
      */
     private boolean gatherLeaf(Query query, int first, int count) {
         for (int b = first; b < first + count; ++b)
-            if (query.frustum.meetsBox(bodyBounds, 6 * b) && bodies[b].mayMeet(query.frustum)) {
+            if (query.frustum.meetsBox(bodyBounds, 6 * b) && (!polygon[b] || bodies[b].mayMeet(query.frustum))) {
                 if (query.gatheredCount == MAX_GATHERED)
                     return false;
                 query.gathered[query.gatheredCount++] = b;
@@ -533,19 +547,6 @@ public final class BoundingVolumeHierarchy {
                 if (!visitBody(query.gathered[i], query, ox, oy, oz, dx, dy, dz, true, minK))
                     return 0;
         return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
-    }
-
-    /**
-     * {@link #transmittance} for every ray of the query's packet, each walking the whole tree alone
-     * (read the answers with {@link Query#getTransmittance}).
-     *
-     * @param minK  below this product a ray's answer is 0
-     * @param query this thread's scratch space, its packet filled
-     */
-    public void transmittances(double minK, Query query) {
-        for (int r = 0; r < query.packetSize; ++r)
-            query.ktrs[r] = transmittance(query.ox[r], query.oy[r], query.oz[r], query.dx[r], query.dy[r], query.dz[r],
-                    query.maxTs[r], minK, query);
     }
 
     /**

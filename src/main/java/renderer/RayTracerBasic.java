@@ -228,8 +228,8 @@ public class RayTracerBasic extends RayTracerBase {
      * traced without allocating anything. Each rendering thread keeps one ({@link ThreadState}) and
      * sets it again for every lit point and light. The rays are traced as one bundle: the bodies
      * that may block any of them are gathered once, by the pyramid from the point to the square, and
-     * the rays are tested against those alone (together, as a packet, when they are many); when
-     * none may, no ray needs testing.
+     * the rays are tested against those alone (together, as a packet, when a subtree of many was
+     * kept); when none may, no ray needs testing.
      */
     static final class LightSquare {
         /**
@@ -242,8 +242,10 @@ public class RayTracerBasic extends RayTracerBase {
         private enum Bundle {
             /** Nothing can block any of them: each lets all the light through, untested. */
             OPEN,
-            /** Each is tested against the bodies gathered for the bundle. */
+            /** Each is tested against the few bodies gathered for the bundle. */
             GATHERED,
+            /** The bundle kept a subtree: its rays walk it together, as a packet. */
+            PACKET,
             /** The bundle's pyramid is flat, or there is no square: each walks the whole hierarchy. */
             WHOLE
         }
@@ -374,7 +376,9 @@ public class RayTracerBasic extends RayTracerBase {
             if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
                     cz + side * nz, ax, ay, az, bx, by, bz, thickness))
                 return Bundle.WHOLE;
-            return bvh.gather(query) ? Bundle.GATHERED : Bundle.OPEN;
+            if (!bvh.gather(query))
+                return Bundle.OPEN;
+            return query.isSubtreeGathered() ? Bundle.PACKET : Bundle.GATHERED;
         }
 
         /** {@return true when no ray of the bundle can be blocked: each lets all the light through} */
@@ -391,14 +395,21 @@ public class RayTracerBasic extends RayTracerBase {
         double visibility(double distance) {
             if (isOpen())
                 return 1;
-            query.clearPacket();
-            query.addToPacket(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
-            return tracePacket(0);
+            return transmittance(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
+        }
+
+        /** The transparency along one ray of the bundle, traced alone. */
+        private double transmittance(double ox, double oy, double oz, double dx, double dy, double dz,
+                                     double distance) {
+            return bundle == Bundle.WHOLE
+                    ? bvh.transmittance(ox, oy, oz, dx, dy, dz, distance, MIN_CALC_COLOR_K, query)
+                    : bvh.gatheredTransmittance(ox, oy, oz, dx, dy, dz, distance, MIN_CALC_COLOR_K, query);
         }
 
         /**
          * The transparency along the ray to the centre of the square plus the summed transparency
-         * of the rays to the first sample points, all traced as one packet.
+         * of the rays to the first sample points: all traced as one packet when the bundle kept a
+         * subtree, else one by one.
          *
          * @param distance the distance from the point to the centre of the square
          * @param samples  sample points in the unit square, as a {@link JitteredGrid} draws them
@@ -408,15 +419,18 @@ public class RayTracerBasic extends RayTracerBase {
         double visibility(double distance, double[] samples, int to) {
             if (isOpen())
                 return 1 + to;
+            if (bundle != Bundle.PACKET)
+                return visibility(distance) + traceSamples(samples, 0, to);
             query.clearPacket();
             query.addToPacket(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
-            addSampleRays(samples, 0, to);
+            traceSamples(samples, 0, to);
             double samplesKtr = tracePacket(1);
             return query.getTransmittance(0) + samplesKtr;
         }
 
         /**
-         * The summed transparency of the shadow rays to some of the sample points, traced as one packet.
+         * The summed transparency of the shadow rays to some of the sample points: traced as one
+         * packet when the bundle kept a subtree, else one by one.
          *
          * @param samples sample points in the unit square, as a {@link JitteredGrid} draws them
          * @param from    the first sample point
@@ -426,17 +440,22 @@ public class RayTracerBasic extends RayTracerBase {
         double visibility(double[] samples, int from, int to) {
             if (isOpen())
                 return to - from;
+            if (bundle != Bundle.PACKET)
+                return traceSamples(samples, from, to);
             query.clearPacket();
-            addSampleRays(samples, from, to);
+            traceSamples(samples, from, to);
             return tracePacket(0);
         }
 
         /**
-         * Adds the shadow rays to some of the sample points to the query's packet. Like
-         * {@link Ray#Ray(Point3D, Vector, Vector)}, each ray starts DELTA off the surface on the side it
-         * leaves to.
+         * Traces the shadow rays to some of the sample points one by one, or for a packet, adds them
+         * to the query's packet. Like {@link Ray#Ray(Point3D, Vector, Vector)}, each ray starts DELTA
+         * off the surface on the side it leaves to.
+         *
+         * @return the sum of the rays' transparencies (0 for a packet, not traced yet)
          */
-        private void addSampleRays(double[] samples, int from, int to) {
+        private double traceSamples(double[] samples, int from, int to) {
+            double ktr = 0;
             for (int s = from; s < to; ++s) {
                 double du = (0.5 - samples[2 * s]) * edges;
                 double dv = (0.5 - samples[2 * s + 1]) * edges;
@@ -450,22 +469,25 @@ public class RayTracerBasic extends RayTracerBase {
                 dz *= inverse;
                 double side = alignZero(nx * dx + ny * dy + nz * dz);
                 double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
-                query.addToPacket(px + offset * nx, py + offset * ny, pz + offset * nz, dx, dy, dz, distance);
+                double ox = px + offset * nx;
+                double oy = py + offset * ny;
+                double oz = pz + offset * nz;
+                if (bundle == Bundle.PACKET)
+                    query.addToPacket(ox, oy, oz, dx, dy, dz, distance);
+                else
+                    ktr += transmittance(ox, oy, oz, dx, dy, dz, distance);
             }
+            return ktr;
         }
 
         /**
-         * Traces the rays of the query's packet: through the gathered bodies, or each through the
-         * whole hierarchy when the bundle's pyramid could not be set.
+         * Traces the rays of the query's packet together, through the subtree the bundle kept.
          *
          * @param from the first ray whose answer counts
          * @return the sum of the answers of the rays from that one on
          */
         private double tracePacket(int from) {
-            if (bundle == Bundle.GATHERED)
-                bvh.gatheredTransmittances(MIN_CALC_COLOR_K, query);
-            else
-                bvh.transmittances(MIN_CALC_COLOR_K, query);
+            bvh.gatheredTransmittances(MIN_CALC_COLOR_K, query);
             double ktr = 0;
             for (int r = from; r < query.getPacketSize(); ++r)
                 ktr += query.getTransmittance(r);

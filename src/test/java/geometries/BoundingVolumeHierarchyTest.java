@@ -1642,9 +1642,9 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
-     * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittances},
-     * {@link BoundingVolumeHierarchy#transmittances} and the packet of a {@link Query}: a closed
-     * bundle of many bodies, transparent blockers and blockers beyond the light; the packet's bounds.
+     * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittances} and the packet of a
+     * {@link Query}: a closed bundle of many bodies, transparent blockers and blockers beyond the
+     * light, a bundle that keeps no subtree; the packet's bounds.
      */
     @Test
     void testPackets() {
@@ -1665,27 +1665,39 @@ class BoundingVolumeHierarchyTest {
         // TC03: the light below both plates: nothing in the way, 1
         for (double answer : plateBundle(bvh, query, apex, -1))
             assertEquals(1, answer, 0, "TC03: nothing before the light");
-        // TC04: transmittances walks the whole tree with each ray of the packet: the same answers
-        // as transmittance, here for 100 random rays (more than the packet's first room for 16)
+        // TC04: 100 random rays of the TC01 bundle (more than the packet's first room for 16), some
+        // through the triangles' shared edges: each gets the tree's answer for it alone
+        plateBundle(bvh, query, apex, 1);
+        assertTrue(query.isSubtreeGathered(), "TC04: more than 32 triangles: a subtree is kept");
         Random rnd = new Random(16);
         List<Ray> rays = new ArrayList<>();
         List<Double> distances = new ArrayList<>();
         for (int r = 0; r < 100; ++r) {
-            rays.add(new Ray(randomPoint(rnd, Point3D.ZERO, 6), randomUnit(rnd)));
-            distances.add(10 * rnd.nextDouble());
+            Point3D target = new Point3D(0.1 + 8 * rnd.nextDouble() - 4, 0.2 + 8 * rnd.nextDouble() - 4, 1);
+            rays.add(new Ray(apex, target.subtract(apex)));
+            distances.add(apex.distance(target));
         }
         fillPacket(query, rays, distances);
         assertEquals(100, query.getPacketSize(), "TC04: the packet holds every ray added");
-        bvh.transmittances(MIN_K, query);
+        bvh.gatheredTransmittances(MIN_K, query);
         for (int r = 0; r < rays.size(); ++r)
             assertEquals(transmittance(bvh, rays.get(r), distances.get(r), MIN_K, bvh.newQuery()),
-                    query.getTransmittance(r), 0, "TC04: ray " + r);
+                    query.getTransmittance(r), 1e-12, "TC04: ray " + r);
+        // TC05: a narrow bundle (square of half-side 0.01 at z = −4.9, nothing in between) keeps no
+        // subtree, and its packet's rays each let all the light through
+        assertTrue(query.getFrustum().set(0.05, 0.1, -5, 0.05, 0.1, -4.9, 0.01, 0, 0, 0, 0.01, 0, 0),
+                "TC05: the pyramid must be set");
+        bvh.gather(query);
+        assertFalse(query.isSubtreeGathered(), "TC05: no subtree for a bundle that meets nothing");
+        fillPacket(query, rays.subList(0, 1), List.of(0.1));
+        bvh.gatheredTransmittances(MIN_K, query);
+        assertEquals(1, query.getTransmittance(0), 0, "TC05: nothing before the light");
 
         // ===== Boundary Values Tests =====
         // TC11: a cleared packet holds no ray, and tracing it answers nothing
         query.clearPacket();
         assertEquals(0, query.getPacketSize(), "TC11: a cleared packet is empty");
-        bvh.transmittances(MIN_K, query);
+        bvh.gatheredTransmittances(MIN_K, query);
         assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(0),
                 "TC11: an empty packet has no answer"), "packet", "TC11");
         // TC12: a packet of one ray: the ray's own answer (the light just before the transparent plate: 1)
