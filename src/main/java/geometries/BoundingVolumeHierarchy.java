@@ -31,9 +31,10 @@ import static primitives.Util.requireNonNull;
  * are intersectables that are not {@link Geometry}s.
  * <p>
  * The shadow rays of one soft shadow can be traced as a bundle: {@link #gather} walks the tree once
- * with the bundle's pyramid (a {@link ShadowFrustum}) and keeps the few bodies it meets, or their
- * smallest subtree when they are many; {@link #gatheredTransmittance} then tests each ray against
- * those alone.
+ * with the bundle's pyramid (a {@link ShadowFrustum}) and keeps the few bodies that may meet it, or
+ * their smallest subtree when they are many; {@link #gatheredTransmittance} then tests a ray against
+ * those alone, and {@link #gatheredTransmittances} all the rays of the bundle at once, walking a kept
+ * subtree as one packet.
  * <p>
  * Queries take a {@link Query}, the caller's per-thread scratch space, and allocate nothing but
  * the {@link GeoPoint} a closest-hit query returns.
@@ -63,6 +64,8 @@ public final class BoundingVolumeHierarchy {
     private final double[] bodyBounds;
     /** Whether each body of the tree is a plain {@link Triangle}, tested from {@link #triangleData}. */
     private final boolean[] triangle;
+    /** Whether each body of the tree is a {@link Polygon}: {@link #gather} then also asks its plane. */
+    private final boolean[] polygon;
     /** The intersection data of the tree's triangles, {@link Triangle#DATA_LENGTH} doubles per body. */
     private final double[] triangleData;
     private final Geometry[] unbounded;
@@ -79,8 +82,8 @@ public final class BoundingVolumeHierarchy {
     private final int depth;
 
     /**
-     * Per-thread scratch space of queries: the traversal stack and the running result. Get one from
-     * {@link #newQuery()} and use it on one thread at a time.
+     * Per-thread scratch space of queries: the traversal stack, the running result and a packet of
+     * shadow rays. Get one from {@link #newQuery()} and use it on one thread at a time.
      */
     public static final class Query {
         private final int[] stack;
@@ -96,15 +99,103 @@ public final class BoundingVolumeHierarchy {
         /** The unbounded bodies {@link #gather} found, and how many. */
         private final Geometry[] gatheredUnbounded;
         private int unboundedCount;
+        /** The first ray of the packet that meets each node on the stack of a packet walk. */
+        private final int[] firstRays;
+        /** The rays of the packet: origins, unit directions, their inverses, distances and transparencies. */
+        private double[] ox = new double[0];
+        private double[] oy = ox;
+        private double[] oz = ox;
+        private double[] dx = ox;
+        private double[] dy = ox;
+        private double[] dz = ox;
+        private double[] ix = ox;
+        private double[] iy = ox;
+        private double[] iz = ox;
+        private double[] maxTs = ox;
+        private double[] ktrs = ox;
+        private int packetSize;
 
         private Query(int stackSize, int unboundedLength) {
             this.stack = new int[stackSize];
+            this.firstRays = new int[stackSize];
             this.gatheredUnbounded = new Geometry[unboundedLength];
         }
 
         /** {@return the pyramid of the shadow bundle the next {@link #gather} looks at} */
         public ShadowFrustum getFrustum() {
             return frustum;
+        }
+
+        /**
+         * Whether the last {@link #gather} kept a subtree, its bodies too many to keep one by one: the
+         * bundle's rays are then best traced together, by {@link #gatheredTransmittances}.
+         *
+         * @return true when a subtree was kept
+         */
+        public boolean isSubtreeGathered() {
+            return gatheredCount < 0;
+        }
+
+        /** Empties the packet of rays {@link #gatheredTransmittances} traces. */
+        public void clearPacket() {
+            packetSize = 0;
+        }
+
+        /** {@return the number of rays in the packet} */
+        public int getPacketSize() {
+            return packetSize;
+        }
+
+        /**
+         * Adds a ray of the bundle of the last {@link #gather} to the packet, as for
+         * {@link #gatheredTransmittance}: its answer is the ray's number in the packet, from 0.
+         *
+         * @param ox   the ray's origin, x
+         * @param oy   the ray's origin, y
+         * @param oz   the ray's origin, z
+         * @param dx   the ray's unit direction, x
+         * @param dy   the ray's unit direction, y
+         * @param dz   the ray's unit direction, z
+         * @param maxT the distance along the ray (to its point of the light's square)
+         */
+        public void addToPacket(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+            if (packetSize == maxTs.length)
+                growPacket(Math.max(16, 2 * packetSize));
+            int r = packetSize++;
+            this.ox[r] = ox;
+            this.oy[r] = oy;
+            this.oz[r] = oz;
+            this.dx[r] = dx;
+            this.dy[r] = dy;
+            this.dz[r] = dz;
+            this.maxTs[r] = maxT;
+        }
+
+        private void growPacket(int capacity) {
+            ox = Arrays.copyOf(ox, capacity);
+            oy = Arrays.copyOf(oy, capacity);
+            oz = Arrays.copyOf(oz, capacity);
+            dx = Arrays.copyOf(dx, capacity);
+            dy = Arrays.copyOf(dy, capacity);
+            dz = Arrays.copyOf(dz, capacity);
+            ix = Arrays.copyOf(ix, capacity);
+            iy = Arrays.copyOf(iy, capacity);
+            iz = Arrays.copyOf(iz, capacity);
+            maxTs = Arrays.copyOf(maxTs, capacity);
+            ktrs = Arrays.copyOf(ktrs, capacity);
+        }
+
+        /**
+         * The answer of a ray of the packet, once {@link #gatheredTransmittances} has traced it.
+         *
+         * @param ray the ray's number in the packet, from 0
+         * @return its transparency in [0, 1]
+         * @throws IllegalArgumentException when there is no such ray in the packet
+         */
+        public double getTransmittance(int ray) {
+            if (ray < 0 || ray >= packetSize)
+                throw new IllegalArgumentException("the packet has rays 0 to " + (packetSize - 1) + ", got " + ray);
+            return ktrs[ray];
         }
     }
 
@@ -134,6 +225,7 @@ public final class BoundingVolumeHierarchy {
         this.depth = builder.depth;
         this.bodies = new Geometry[flat.length];
         this.triangle = new boolean[flat.length];
+        this.polygon = new boolean[flat.length];
         this.triangleData = new double[Triangle.DATA_LENGTH * flat.length];
         runInChunks(flat.length, threads, (from, to) -> placeBodies(flat, builder.order, from, to));
     }
@@ -151,6 +243,7 @@ public final class BoundingVolumeHierarchy {
         for (int b = from; b < to; ++b) {
             Geometry body = flat[order[b]];
             bodies[b] = body;
+            polygon[b] = body instanceof Polygon;
             if (body.getClass() == Triangle.class) {
                 triangle[b] = true;
                 ((Triangle) body).copyData(triangleData, Triangle.DATA_LENGTH * b);
@@ -349,8 +442,9 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Gathers the bodies a bundle of shadow rays may meet, for {@link #gatheredTransmittance}: the
-     * unbounded bodies and the tree's bodies whose boxes (planes, for unbounded bodies) meet the
-     * query's {@link Query#getFrustum() frustum} (set it first). When more than a few of the tree's
+     * unbounded bodies and the tree's bodies that may meet the query's
+     * {@link Query#getFrustum() frustum} (set it first): the planes of unbounded ones and of
+     * polygons must cross it, and the boxes of bounded ones meet it. When more than a few of the tree's
      * bodies meet it, their smallest subtree is kept instead. A brute-force {@link #scan} gathers
      * every body.
      *
@@ -408,10 +502,13 @@ public final class BoundingVolumeHierarchy {
         }
     }
 
-    /** Adds a leaf's bodies whose boxes meet the frustum; false when there is no room for them. */
+    /**
+     * Adds a leaf's bodies that may meet the frustum (their boxes, and for a polygon its plane; other
+     * bodies are not read, only their boxes); false when there is no room for them.
+     */
     private boolean gatherLeaf(Query query, int first, int count) {
         for (int b = first; b < first + count; ++b)
-            if (query.frustum.meetsBox(bodyBounds, 6 * b)) {
+            if (query.frustum.meetsBox(bodyBounds, 6 * b) && (!polygon[b] || bodies[b].mayMeet(query.frustum))) {
                 if (query.gatheredCount == MAX_GATHERED)
                     return false;
                 query.gathered[query.gatheredCount++] = b;
@@ -450,6 +547,154 @@ public final class BoundingVolumeHierarchy {
                 if (!visitBody(query.gathered[i], query, ox, oy, oz, dx, dy, dz, true, minK))
                     return 0;
         return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
+    }
+
+    /**
+     * {@link #gatheredTransmittance} for every ray of the query's packet at once (read the answers
+     * with {@link Query#getTransmittance}), each the same as that ray's alone. When the last
+     * {@link #gather} kept a subtree, the rays walk it together as a packet: each node is visited
+     * once for all of them, set aside when it does not meet the bundle's pyramid, and entered when
+     * one of the rays still unblocked meets its box; a leaf's bodies are tested on every such ray
+     * that meets the leaf's box. A ray leaves the walk as soon as it is blocked.
+     *
+     * @param minK  below this product a ray's answer is 0
+     * @param query this thread's scratch space, as the last {@link #gather} left it, its packet filled
+     */
+    public void gatheredTransmittances(double minK, Query query) {
+        int n = query.packetSize;
+        if (query.gatheredCount >= 0) {
+            for (int r = 0; r < n; ++r)
+                query.ktrs[r] = gatheredTransmittance(query.ox[r], query.oy[r], query.oz[r], query.dx[r], query.dy[r],
+                        query.dz[r], query.maxTs[r], minK, query);
+            return;
+        }
+        int active = 0;
+        for (int r = 0; r < n; ++r) {
+            query.ktrs[r] = throughUnbounded(query, r, minK);
+            if (query.ktrs[r] > 0)
+                ++active;
+        }
+        if (active > 0)
+            walkPacket(query, active, minK);
+        for (int r = 0; r < n; ++r)
+            if (query.ktrs[r] > 0)
+                query.ktrs[r] = throughOthers(query.ktrs[r], query.ox[r], query.oy[r], query.oz[r], query.dx[r],
+                        query.dy[r], query.dz[r], query.maxTs[r], minK);
+    }
+
+    /** The transparency of the gathered unbounded bodies along ray r of the packet, 0 when they block it. */
+    private static double throughUnbounded(Query query, int r, double minK) {
+        query.maxT = query.maxTs[r];
+        query.ktr = 1;
+        for (int i = 0; i < query.unboundedCount; ++i)
+            if (!visit(query.gatheredUnbounded[i], query, query.ox[r], query.oy[r], query.oz[r], query.dx[r],
+                    query.dy[r], query.dz[r], true, minK))
+                return 0;
+        return query.ktr;
+    }
+
+    /**
+     * Walks the subtree the last {@link #gather} kept with the packet's rays still unblocked: the
+     * stack holds each node with the first ray that meets its box (the rays before it do not), and
+     * children are entered nearer first by that ray's direction.
+     *
+     * @param active the number of unblocked rays
+     */
+    private void walkPacket(Query query, int active, double minK) {
+        int n = query.packetSize;
+        for (int r = 0; r < n; ++r) {
+            query.ix[r] = 1 / query.dx[r];
+            query.iy[r] = 1 / query.dy[r];
+            query.iz[r] = 1 / query.dz[r];
+        }
+        int node = query.subtree;
+        int first = firstRayMeeting(query, node, 0);
+        int[] stack = query.stack;
+        int[] firstRays = query.firstRays;
+        int top = 0;
+        while (first < n) {
+            int link = nodeLinks[2 * node];
+            int count = nodeLinks[2 * node + 1];
+            if (count < 0) {
+                int negative = query.dx[first] < 0 ? 1 : 0;
+                negative |= query.dy[first] < 0 ? 2 : 0;
+                negative |= query.dz[first] < 0 ? 4 : 0;
+                int near = link + (negative >> (-1 - count) & 1);
+                int far = 2 * link + 1 - near;
+                int nearFirst = packetMeets(query, near, first);
+                int farFirst = packetMeets(query, far, first);
+                if (nearFirst < n) {
+                    if (farFirst < n) {
+                        stack[top] = far;
+                        firstRays[top++] = farFirst;
+                    }
+                    node = near;
+                    first = nearFirst;
+                    continue;
+                }
+                if (farFirst < n) {
+                    node = far;
+                    first = farFirst;
+                    continue;
+                }
+            } else {
+                active -= leafOnPacket(query, node, link, count, first, minK);
+                if (active == 0)
+                    return;
+            }
+            first = n;
+            while (top > 0 && first == n) {
+                node = stack[--top];
+                first = firstRays[top] < n && query.ktrs[firstRays[top]] > 0 ? firstRays[top]
+                        : firstRayMeeting(query, node, firstRays[top]);
+            }
+        }
+    }
+
+    /** The first unblocked ray from a given one on that meets a node's box, n when none does or the pyramid misses it. */
+    private int packetMeets(Query query, int node, int from) {
+        return query.frustum.meetsBox(nodeBounds, 6 * node) ? firstRayMeeting(query, node, from) : query.packetSize;
+    }
+
+    /** The first unblocked ray from a given one on that meets a node's box, or the packet's size when none does. */
+    private int firstRayMeeting(Query query, int node, int from) {
+        int n = query.packetSize;
+        for (int r = from; r < n; ++r)
+            if (query.ktrs[r] > 0 && rayMeets(query, node, r))
+                return r;
+        return n;
+    }
+
+    /** Whether ray r of the packet meets a node's box before its distance. */
+    private boolean rayMeets(Query query, int node, int r) {
+        double ix = query.ix[r];
+        double iy = query.iy[r];
+        double iz = query.iz[r];
+        return boxHit(node, query.ox[r], query.oy[r], query.oz[r], ix, iy, iz, ix < 0 ? 3 : 0, iy < 0 ? 3 : 0,
+                iz < 0 ? 3 : 0, query.maxTs[r]);
+    }
+
+    /**
+     * Tests a leaf's bodies on every unblocked ray from the first that meets the leaf's box on.
+     *
+     * @return the number of rays the leaf blocked
+     */
+    private int leafOnPacket(Query query, int node, int firstBody, int count, int first, double minK) {
+        int blocked = 0;
+        for (int r = first; r < query.packetSize; ++r) {
+            if (!(query.ktrs[r] > 0) || r != first && !rayMeets(query, node, r))
+                continue;
+            query.maxT = query.maxTs[r];
+            query.ktr = query.ktrs[r];
+            boolean through = true;
+            for (int b = firstBody; b < firstBody + count && through; ++b)
+                through = visitBody(b, query, query.ox[r], query.oy[r], query.oz[r], query.dx[r], query.dy[r],
+                        query.dz[r], true, minK);
+            query.ktrs[r] = through ? query.ktr : 0;
+            if (!through)
+                ++blocked;
+        }
+        return blocked;
     }
 
     /** Multiplies a transparency by the {@code kT} of every hit of the intersectables that are not geometries. */

@@ -170,8 +170,8 @@ public abstract class Geometry extends Intersectable {
     }
 
     /**
-     * Whether an unbounded body may meet any ray of a shadow bundle; bounded bodies are culled by
-     * their boxes instead. The default says yes.
+     * Whether the body may meet any ray of a shadow bundle: the test of unbounded bodies, and of
+     * bounded ones whose boxes meet the bundle's pyramid. The default says yes.
      *
      * @param frustum the pyramid the bundle sweeps
      * @return false only when no ray of the bundle can meet the body

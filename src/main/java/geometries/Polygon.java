@@ -246,6 +246,12 @@ public class Polygon extends Geometry {
         return true;
     }
 
+    /** A polygon lies in its plane: it can meet a bundle only when its plane does. */
+    @Override
+    boolean mayMeet(ShadowFrustum frustum) {
+        return plane.mayMeet(frustum);
+    }
+
     @Override
     public String toString() {
         return "Polygon" + vertices;

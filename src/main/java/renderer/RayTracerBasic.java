@@ -241,7 +241,8 @@ public class RayTracerBasic extends RayTracerBase {
     /**
      * How much of a light reaches a point: 1 when nothing is in the way, 0 when an opaque body is,
      * and the product of the {@code kT} of the transparent bodies in between otherwise. With soft
-     * shadows on and a light with an area, the average over rays to the light's square.
+     * shadows on and a light with an area, the average over rays to the light's square. Nothing is
+     * allocated: the rays live in the calling thread's {@link LightSquare}.
      *
      * @param light    the light
      * @param l        the unit direction from the light to the point
@@ -251,14 +252,15 @@ public class RayTracerBasic extends RayTracerBase {
      */
     double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint) {
         ThreadState state = threadState();
+        BoundingVolumeHierarchy bvh = accelerator();
         Point3D point = geoPoint.point;
         // the ray to the light itself, or to the centre of its square
-        Ray lightRay = new Ray(point, l.scale(-1), n);
+        LightSquare square = state.lightSquare().setPoint(point, n, l, bvh, state.query(bvh));
         double distance = light.getDistance(point);
         if (isSoftShadows() && light instanceof AreaLightSource areaLight && areaLight.getEdges() > 0)
-            return calcSoftShadows(areaLight, lightRay, distance, n, point, state);
+            return calcSoftShadows(areaLight, square, distance, state);
         ++state.shadowRays;
-        return visibility(distance, lightRay, state);
+        return square.visibility(distance);
     }
 
     /**
@@ -268,26 +270,21 @@ public class RayTracerBasic extends RayTracerBase {
      * rays and the centre's disagree.
      *
      * @param light          the light
-     * @param centreRay      the shadow ray to the centre of the light's square
-     * @param centreDistance the distance from the point to that centre
-     * @param n              the surface normal at the point
-     * @param point          the lit point
+     * @param square         the calling thread's light square, set at the lit point
+     * @param centreDistance the distance from the point to the centre of the light's square
      * @param state          the calling thread's state
      * @return the average transparency of the rays, in [0, 1]
      */
-    double calcSoftShadows(AreaLightSource light, Ray centreRay, double centreDistance, Vector n, Point3D point,
-                           ThreadState state) {
-        BoundingVolumeHierarchy bvh = accelerator();
-        LightSquare square = new LightSquare(light, point, n, bvh, state.query(bvh));
+    double calcSoftShadows(AreaLightSource light, LightSquare square, double centreDistance, ThreadState state) {
+        square.setSquare(light);
         JitteredGrid grid = getBeamGrid();
         double[] samples = state.points(grid);
         if (square.isOpen()) // the points are not needed, but the numbers drawn after them must stay the same
             state.random.skip(2L * grid.getSamplesCount());
         else
             grid.sample(state.random, samples);
-        double ktr = square.visibility(centreRay, centreDistance);
         int outline = grid.getOutlineCount();
-        ktr += square.visibility(samples, 0, outline);
+        double ktr = square.visibility(centreDistance, samples, outline);
         int rays = 1 + outline;
         boolean agree = ktr == 0 || ktr == rays;
         if (!(isAdaptiveSoftShadows() && agree)) {
@@ -302,11 +299,13 @@ public class RayTracerBasic extends RayTracerBase {
 
     /**
      * A light's square as seen from a lit point, in raw doubles: shadow rays to its sample points are
-     * traced without allocating anything. The rays are traced as one bundle: the bodies that may
-     * block any of them are gathered once, by the pyramid from the point to the square, and each ray
-     * is tested against those alone; when none may, no ray needs testing.
+     * traced without allocating anything. Each rendering thread keeps one ({@link ThreadState}) and
+     * sets it again for every lit point and light. The rays are traced as one bundle: the bodies
+     * that may block any of them are gathered once, by the pyramid from the point to the square, and
+     * the rays are tested against those alone (together, as a packet, when a subtree of many was
+     * kept); when none may, no ray needs testing.
      */
-    private static final class LightSquare {
+    static final class LightSquare {
         /**
          * How far, relative to the reach of the square, the square must lie off the point's tangent
          * plane for all its rays to leave the surface on the same side.
@@ -317,39 +316,99 @@ public class RayTracerBasic extends RayTracerBase {
         private enum Bundle {
             /** Nothing can block any of them: each lets all the light through, untested. */
             OPEN,
-            /** Each is tested against the bodies gathered for the bundle. */
+            /** Each is tested against the few bodies gathered for the bundle. */
             GATHERED,
-            /** The bundle's pyramid is flat: each walks the whole hierarchy. */
+            /** The bundle kept a subtree: its rays walk it together, as a packet. */
+            PACKET,
+            /** The bundle's pyramid is flat, or there is no square: each walks the whole hierarchy. */
             WHOLE
         }
 
-        private final double cx;
-        private final double cy;
-        private final double cz;
-        private final double ux;
-        private final double uy;
-        private final double uz;
-        private final double vx;
-        private final double vy;
-        private final double vz;
-        private final double edges;
-        private final double px;
-        private final double py;
-        private final double pz;
+        private double cx;
+        private double cy;
+        private double cz;
+        private double ux;
+        private double uy;
+        private double uz;
+        private double vx;
+        private double vy;
+        private double vz;
+        private double edges;
+        /** The lit point. */
+        private Point3D point;
+        private double px;
+        private double py;
+        private double pz;
         /** The normal scaled to the length DELTA: how far a shadow ray's head moves off the surface. */
-        private final double nx;
-        private final double ny;
-        private final double nz;
-        private final BoundingVolumeHierarchy bvh;
-        private final BoundingVolumeHierarchy.Query query;
-        private final Bundle bundle;
+        private double nx;
+        private double ny;
+        private double nz;
+        /** The ray to the light itself (or the centre of its square): its head, moved off the surface, and unit direction. */
+        private double centreOx;
+        private double centreOy;
+        private double centreOz;
+        private double centreDx;
+        private double centreDy;
+        private double centreDz;
+        private BoundingVolumeHierarchy bvh;
+        private BoundingVolumeHierarchy.Query query;
+        private Bundle bundle = Bundle.WHOLE;
 
-        LightSquare(AreaLightSource light, Point3D p, Vector n, BoundingVolumeHierarchy bvh,
-                    BoundingVolumeHierarchy.Query query) {
+        /**
+         * Sets the lit point and the ray from it to the light (to the centre of the light's square),
+         * the same ray as {@link Ray#Ray(Point3D, Vector, Vector)} makes from the point toward −l.
+         * No square is set: until {@link #setSquare}, rays walk the whole hierarchy.
+         *
+         * @param p     the lit point
+         * @param n     the surface normal at the point
+         * @param l     the unit direction from the light to the point
+         * @param bvh   the hierarchy of the scene
+         * @param query the calling thread's scratch space for it
+         * @return this light square
+         */
+        LightSquare setPoint(Point3D p, Vector n, Vector l, BoundingVolumeHierarchy bvh,
+                             BoundingVolumeHierarchy.Query query) {
+            double normalX = n.getX();
+            double normalY = n.getY();
+            double normalZ = n.getZ();
+            double normalLength = n.length();
+            double delta = Ray.DELTA / normalLength;
+            this.point = p;
+            this.px = p.getX();
+            this.py = p.getY();
+            this.pz = p.getZ();
+            this.nx = normalX * delta;
+            this.ny = normalY * delta;
+            this.nz = normalZ * delta;
+            this.bvh = bvh;
+            this.query = query;
+            this.bundle = Bundle.WHOLE;
+            double dirX = -l.getX();
+            double dirY = -l.getY();
+            double dirZ = -l.getZ();
+            double side = alignZero(normalX * dirX + normalY * dirY + normalZ * dirZ);
+            double move = side == 0 ? 0 : (side > 0 ? Ray.DELTA : -Ray.DELTA) / normalLength;
+            this.centreOx = side == 0 ? px : px + normalX * move;
+            this.centreOy = side == 0 ? py : py + normalY * move;
+            this.centreOz = side == 0 ? pz : pz + normalZ * move;
+            // l is a unit vector already: normalising again, as the ray does, moves at most its last bits
+            double length = Math.sqrt(dirX * dirX + dirY * dirY + dirZ * dirZ);
+            this.centreDx = dirX / length;
+            this.centreDy = dirY / length;
+            this.centreDz = dirZ / length;
+            return this;
+        }
+
+        /**
+         * Sets the light's square, seen from the point of the last {@link #setPoint}, and gathers
+         * the bodies its bundle of rays may meet.
+         *
+         * @param light the light
+         */
+        void setSquare(AreaLightSource light) {
             Point3D center = light.getCenter();
-            Vector u = light.getU(p);
-            Vector v = light.getV(p);
-            double delta = Ray.DELTA / n.length();
+            Vector u = light.getU(point);
+            Vector v = light.getV(point);
             this.cx = center.getX();
             this.cy = center.getY();
             this.cz = center.getZ();
@@ -360,14 +419,6 @@ public class RayTracerBasic extends RayTracerBase {
             this.vy = v.getY();
             this.vz = v.getZ();
             this.edges = light.getEdges();
-            this.px = p.getX();
-            this.py = p.getY();
-            this.pz = p.getZ();
-            this.nx = n.getX() * delta;
-            this.ny = n.getY() * delta;
-            this.nz = n.getZ() * delta;
-            this.bvh = bvh;
-            this.query = query;
             this.bundle = gather();
         }
 
@@ -399,7 +450,9 @@ public class RayTracerBasic extends RayTracerBase {
             if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
                     cz + side * nz, ax, ay, az, bx, by, bz, thickness))
                 return Bundle.WHOLE;
-            return bvh.gather(query) ? Bundle.GATHERED : Bundle.OPEN;
+            if (!bvh.gather(query))
+                return Bundle.OPEN;
+            return query.isSubtreeGathered() ? Bundle.PACKET : Bundle.GATHERED;
         }
 
         /** {@return true when no ray of the bundle can be blocked: each lets all the light through} */
@@ -408,21 +461,18 @@ public class RayTracerBasic extends RayTracerBase {
         }
 
         /**
-         * The transparency along the ray to the centre of the square.
+         * The transparency along the ray to the light (or to the centre of its square), traced alone.
          *
-         * @param ray      the ray, its head already moved off the surface
-         * @param distance the distance from the point to the centre
+         * @param distance the distance from the point to the light (or the centre of its square)
          * @return the transparency in [0, 1]
          */
-        double visibility(Ray ray, double distance) {
+        double visibility(double distance) {
             if (isOpen())
                 return 1;
-            Point3D p0 = ray.getP0();
-            Vector dir = ray.getDir();
-            return transmittance(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), distance);
+            return transmittance(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
         }
 
-        /** The transparency along one ray of the bundle. */
+        /** The transparency along one ray of the bundle, traced alone. */
         private double transmittance(double ox, double oy, double oz, double dx, double dy, double dz,
                                      double distance) {
             return bundle == Bundle.WHOLE
@@ -431,9 +481,30 @@ public class RayTracerBasic extends RayTracerBase {
         }
 
         /**
-         * The summed transparency of the shadow rays to some of the sample points. Like
-         * {@link Ray#Ray(Point3D, Vector, Vector)}, each ray starts DELTA off the surface on the side it
-         * leaves to.
+         * The transparency along the ray to the centre of the square plus the summed transparency
+         * of the rays to the first sample points: all traced as one packet when the bundle kept a
+         * subtree, else one by one.
+         *
+         * @param distance the distance from the point to the centre of the square
+         * @param samples  sample points in the unit square, as a {@link JitteredGrid} draws them
+         * @param to       one past the last sample point
+         * @return the centre's transparency plus the sum of the others'
+         */
+        double visibility(double distance, double[] samples, int to) {
+            if (isOpen())
+                return 1 + to;
+            if (bundle != Bundle.PACKET)
+                return visibility(distance) + traceSamples(samples, 0, to);
+            query.clearPacket();
+            query.addToPacket(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
+            traceSamples(samples, 0, to);
+            double samplesKtr = tracePacket(1);
+            return query.getTransmittance(0) + samplesKtr;
+        }
+
+        /**
+         * The summed transparency of the shadow rays to some of the sample points: traced as one
+         * packet when the bundle kept a subtree, else one by one.
          *
          * @param samples sample points in the unit square, as a {@link JitteredGrid} draws them
          * @param from    the first sample point
@@ -443,6 +514,21 @@ public class RayTracerBasic extends RayTracerBase {
         double visibility(double[] samples, int from, int to) {
             if (isOpen())
                 return to - from;
+            if (bundle != Bundle.PACKET)
+                return traceSamples(samples, from, to);
+            query.clearPacket();
+            traceSamples(samples, from, to);
+            return tracePacket(0);
+        }
+
+        /**
+         * Traces the shadow rays to some of the sample points one by one, or for a packet, adds them
+         * to the query's packet. Like {@link Ray#Ray(Point3D, Vector, Vector)}, each ray starts DELTA
+         * off the surface on the side it leaves to.
+         *
+         * @return the sum of the rays' transparencies (0 for a packet, not traced yet)
+         */
+        private double traceSamples(double[] samples, int from, int to) {
             double ktr = 0;
             for (int s = from; s < to; ++s) {
                 double du = (0.5 - samples[2 * s]) * edges;
@@ -457,26 +543,29 @@ public class RayTracerBasic extends RayTracerBase {
                 dz *= inverse;
                 double side = alignZero(nx * dx + ny * dy + nz * dz);
                 double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
-                ktr += transmittance(px + offset * nx, py + offset * ny, pz + offset * nz, dx, dy, dz, distance);
+                double ox = px + offset * nx;
+                double oy = py + offset * ny;
+                double oz = pz + offset * nz;
+                if (bundle == Bundle.PACKET)
+                    query.addToPacket(ox, oy, oz, dx, dy, dz, distance);
+                else
+                    ktr += transmittance(ox, oy, oz, dx, dy, dz, distance);
             }
             return ktr;
         }
-    }
 
-    /**
-     * The transparency along one shadow ray: the product of the {@code kT} of every body it passes
-     * before the light, 0 as soon as that product drops below {@link #MIN_CALC_COLOR_K}.
-     *
-     * @param lightDistance the distance from the point to the light (or the light's sample point)
-     * @param lightRay      the shadow ray, its head already moved off the surface
-     * @param state         the calling thread's state (its query scratch space)
-     * @return the transparency in [0, 1]
-     */
-    private double visibility(double lightDistance, Ray lightRay, ThreadState state) {
-        BoundingVolumeHierarchy bvh = accelerator();
-        Point3D p0 = lightRay.getP0();
-        Vector dir = lightRay.getDir();
-        return bvh.transmittance(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), lightDistance,
-                MIN_CALC_COLOR_K, state.query(bvh));
+        /**
+         * Traces the rays of the query's packet together, through the subtree the bundle kept.
+         *
+         * @param from the first ray whose answer counts
+         * @return the sum of the answers of the rays from that one on
+         */
+        private double tracePacket(int from) {
+            bvh.gatheredTransmittances(MIN_CALC_COLOR_K, query);
+            double ktr = 0;
+            for (int r = from; r < query.getPacketSize(); ++r)
+                ktr += query.getTransmittance(r);
+            return ktr;
+        }
     }
 }

@@ -7,7 +7,8 @@ import primitives.Color;
 
 /**
  * What one rendering thread keeps for itself in a ray tracer, so that the per-pixel path takes no
- * lock: the current pixel's random stream, room for sample points, and the thread's ray counts.
+ * lock: the current pixel's random stream, room for sample points and shadow rays, and the thread's ray
+ * counts.
  */
 final class ThreadState {
     /** The random stream of the pixel being rendered. */
@@ -35,6 +36,7 @@ final class ThreadState {
     /** The pixel a lattice point's colour belongs to: its entry is current when it equals {@link #latticePixel}. */
     private int[] latticeStamps = new int[0];
     private int latticePixel;
+    private RayTracerBasic.LightSquare lightSquare;
 
     /**
      * Creates the state of a thread.
@@ -133,6 +135,13 @@ final class ThreadState {
     /** {@return room for the one jittered point of a spread ray inside a beam (2 doubles)} */
     double[] spreadPoint() {
         return spreadPoint;
+    }
+
+    /** {@return this thread's light square, set again for every lit point: the shadow path allocates nothing} */
+    RayTracerBasic.LightSquare lightSquare() {
+        if (lightSquare == null)
+            lightSquare = new RayTracerBasic.LightSquare();
+        return lightSquare;
     }
 
     /**

@@ -1306,23 +1306,36 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
-     * How many of a composite's bounded bodies (the tree's bodies) have boxes the frustum meets: when
-     * more than {@value #MAX_GATHERED}, gather keeps a subtree instead of the bodies.
+     * How many of a composite's bounded bodies (the tree's bodies) may meet the frustum: their boxes
+     * meet it and their own test ({@link Geometry#mayMeet}, for a polygon its plane) says they may.
+     * When more than {@value #MAX_GATHERED}, gather keeps a subtree instead of the bodies.
      *
      * @param item    the composite or body
      * @param frustum the frustum, set
      * @return the count
      */
     private static int boxesMeeting(Intersectable item, ShadowFrustum frustum) {
+        return meeting(item, frustum, true);
+    }
+
+    /**
+     * How many of a composite's bounded bodies have boxes the frustum meets, or also pass their own test.
+     *
+     * @param item    the composite or body
+     * @param frustum the frustum, set
+     * @param ownTest whether the bodies' own test counts too
+     * @return the count
+     */
+    private static int meeting(Intersectable item, ShadowFrustum frustum, boolean ownTest) {
         if (item instanceof Geometries composite) {
             int count = 0;
             for (Intersectable child : composite.getGeometries())
-                count += boxesMeeting(child, frustum);
+                count += meeting(child, frustum, ownTest);
             return count;
         }
         if (item instanceof Geometry geometry) {
             double[] box = geometry.bounds();
-            return box != null && frustum.meetsBox(box, 0) ? 1 : 0;
+            return box != null && frustum.meetsBox(box, 0) && (!ownTest || geometry.mayMeet(frustum)) ? 1 : 0;
         }
         return 0;
     }
@@ -1346,15 +1359,17 @@ class BoundingVolumeHierarchyTest {
     /**
      * How often gather gave each kind of answer, and how many rays were blocked or dimmed. The two
      * kinds of true cannot be told apart through the API: they are told by how many of the tree's
-     * boxes meet the frustum.
+     * bodies may meet the frustum.
      */
     private static final class GatherCounts {
         /** gather gave false. */
         private int none;
-        /** gather gave true, at most 32 of the tree's boxes meet the frustum: the bodies are kept. */
+        /** gather gave true, at most 32 of the tree's bodies may meet the frustum: the bodies are kept. */
         private int few;
-        /** gather gave true, more than 32 of the tree's boxes meet the frustum: a subtree is kept. */
+        /** gather gave true, more than 32 of the tree's bodies may meet the frustum: a subtree is kept. */
         private int subtree;
+        /** bundles whose pyramid meets some boxes but no polygon's plane among them. */
+        private int planeCulled;
         /** bundles with a thickness (apex on a body's surface). */
         private int thick;
         private int rays;
@@ -1406,6 +1421,8 @@ class BoundingVolumeHierarchyTest {
                     a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), thickness))
                 continue; // a flat pyramid: the renderer walks the tree instead
             int meeting = boxesMeeting(scene.geometries(), frustum);
+            if (meeting == 0 && meeting(scene.geometries(), frustum, false) > 0)
+                ++counts.planeCulled;
             boolean found = bvh.gather(query);
             int bundleNumber = bundle;
             Point3D origin = apex;
@@ -1414,8 +1431,8 @@ class BoundingVolumeHierarchyTest {
                     + ", a " + a + ", b " + b + ", thickness " + thick + ", gathered " + found + ", " + meeting
                     + " boxes meet)";
             if (!found) {
-                // a body whose box meets the frustum is in nodes whose boxes meet it: gathered
-                assertEquals(0, meeting, () -> bundleLabel.get() + ": nothing gathered though boxes meet");
+                // a body that may meet the frustum (its box and its own test) is in nodes whose boxes meet it: gathered
+                assertEquals(0, meeting, () -> bundleLabel.get() + ": nothing gathered though bodies may meet");
                 ++counts.none;
             } else if (meeting > MAX_GATHERED)
                 ++counts.subtree;
@@ -1423,6 +1440,8 @@ class BoundingVolumeHierarchyTest {
                 ++counts.few;
             if (thickness > 0)
                 ++counts.thick;
+            List<Ray> rays = new ArrayList<>();
+            List<Double> distances = new ArrayList<>();
             for (int r = 0; r < 40; ++r) {
                 Point3D target = squarePoint(rnd, c, a, b);
                 Point3D start = stray(rnd, apex, thickness);
@@ -1451,7 +1470,52 @@ class BoundingVolumeHierarchyTest {
                 ++counts.rays;
                 if (transmittance(bvh, ray, distance, 0, treeQuery) < 1)
                     ++counts.darkened;
+                rays.add(ray);
+                distances.add(distance);
             }
+            assertPacket(bvh, query, treeQuery, rays, distances, opaque, bundleLabel);
+        }
+    }
+
+    /**
+     * Asserts that the rays of a bundle traced as one packet, after its gather, each get the
+     * transmittance the tree gives them alone, with the cut-off and without.
+     *
+     * @param bvh       the hierarchy
+     * @param query     the scratch space, as the gather left it
+     * @param treeQuery another scratch space, for the rays alone
+     * @param rays      the rays
+     * @param distances their distances to the square
+     * @param opaque    whether the answers must be equal to the bit (else within 1e-12)
+     * @param label     the bundle's label
+     */
+    private static void assertPacket(BoundingVolumeHierarchy bvh, Query query, Query treeQuery, List<Ray> rays,
+                                     List<Double> distances, boolean opaque, Supplier<String> label) {
+        for (double minK : new double[] { MIN_K, 0 }) {
+            fillPacket(query, rays, distances);
+            bvh.gatheredTransmittances(minK, query);
+            for (int r = 0; r < rays.size(); ++r) {
+                double expected = transmittance(bvh, rays.get(r), distances.get(r), minK, treeQuery);
+                int number = r;
+                assertEquals(expected, query.getTransmittance(r), opaque ? 0 : 1e-12,
+                        () -> label.get() + " packet ray " + number + " " + rays.get(number) + " (minK " + minK + ")");
+            }
+        }
+    }
+
+    /**
+     * Empties a query's packet and puts rays in it.
+     *
+     * @param query     the scratch space
+     * @param rays      the rays
+     * @param distances their distances
+     */
+    private static void fillPacket(Query query, List<Ray> rays, List<Double> distances) {
+        query.clearPacket();
+        for (int r = 0; r < rays.size(); ++r) {
+            Point3D p = rays.get(r).getP0();
+            Vector d = rays.get(r).getDir();
+            query.addToPacket(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), distances.get(r));
         }
     }
 
@@ -1482,7 +1546,8 @@ class BoundingVolumeHierarchyTest {
         // TC01: opaque random scenes (with planes, a tube, cylinders, squares, bodies that are not
         // Geometry, nested composites, a dense mesh): 60 bundles each from random apexes on (thick), in,
         // near and away from the bodies to random narrow and wide squares, 40 rays each:
-        // gatheredTransmittance = transmittance, 0 or 1
+        // gatheredTransmittance = transmittance, 0 or 1, and so is the answer of each ray of the
+        // bundle traced as one packet (gatheredTransmittances)
         Random rnd = new Random(7031);
         GatherCounts opaque = new GatherCounts();
         for (int s : new int[] { 0, 2, 3, 5, 6, 7, 8, 9, 13, 15, 17, 19 })
@@ -1492,7 +1557,7 @@ class BoundingVolumeHierarchyTest {
         assertCounts(opaque, "TC01");
 
         // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque), the hierarchy built on 3
-        // threads: equal within 1e-12
+        // threads: equal within 1e-12, one by one and as a packet
         double[] kts = { 0.5, 0.9, 0.25, 1, 0.75, 0.999, 0.5, 0.9, 0 };
         GatherCounts transparent = new GatherCounts();
         for (int s : new int[] { 0, 2, 4, 5, 6, 8, 9, 13, 15, 18, 19, -1, -1 }) {
@@ -1516,9 +1581,136 @@ class BoundingVolumeHierarchyTest {
         assertTrue(counts.few >= 100, tc + ": too few bundles with a few bodies gathered (" + counts.few + ")");
         assertTrue(counts.subtree >= 50, tc + ": too few bundles meeting more than 32 boxes (" + counts.subtree + ")");
         assertTrue(counts.thick >= 100, tc + ": too few thick bundles (" + counts.thick + ")");
+        assertTrue(counts.planeCulled >= 10, tc + ": too few bundles whose polygons were culled by their planes ("
+                + counts.planeCulled + ")");
         assertTrue(counts.darkened >= 500 && counts.rays - counts.darkened >= 500,
                 tc + ": too few darkened (" + counts.darkened + ") or open (" + (counts.rays - counts.darkened)
                         + ") rays of " + counts.rays);
+    }
+
+    /**
+     * Two plates of 10 × 10 unit cells, each cell cut into two triangles along its diagonal, over
+     * x, y in [−5, 5]: a transparent one (kT 0.5) at z = 0 and an opaque one at z = 2.
+     *
+     * @return the composite of the 400 triangles
+     */
+    private static Geometries twoPlates() {
+        Geometries plates = new Geometries();
+        Material glass = new Material().setKt(0.5);
+        Material opaque = new Material();
+        for (double z : new double[] { 0, 2 })
+            for (int i = -5; i < 5; ++i)
+                for (int j = -5; j < 5; ++j) {
+                    Material material = z == 0 ? glass : opaque;
+                    plates.add(new Triangle(new Point3D(i, j, z), new Point3D(i + 1, j, z), new Point3D(i + 1, j + 1, z))
+                                    .setMaterial(material),
+                            new Triangle(new Point3D(i, j, z), new Point3D(i + 1, j + 1, z), new Point3D(i, j + 1, z))
+                                    .setMaterial(material));
+                }
+        return plates;
+    }
+
+    /**
+     * Traces a packet from an apex to the points of a square at height z on a 3 × 3 grid (−0.8, 0
+     * and 0.8 of each half-side, so that no ray crosses the plates of {@link #twoPlates} on an edge),
+     * after gathering its bundle.
+     *
+     * @param bvh   the hierarchy
+     * @param query the scratch space
+     * @param apex  the rays' origin
+     * @param z     the height of the square (centre (0.1, 0.2, z), half-sides 4)
+     * @return the rays' answers
+     */
+    private static double[] plateBundle(BoundingVolumeHierarchy bvh, Query query, Point3D apex, double z) {
+        assertTrue(query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), 0.1, 0.2, z, 4, 0, 0, 0, 4, 0, 0),
+                "the bundle's pyramid must be set");
+        bvh.gather(query);
+        List<Ray> rays = new ArrayList<>();
+        List<Double> distances = new ArrayList<>();
+        for (double s : new double[] { -3.2, 0, 3.2 })
+            for (double t : new double[] { -3.2, 0, 3.2 }) {
+                Point3D target = new Point3D(0.1 + s, 0.2 + t, z);
+                rays.add(new Ray(apex, target.subtract(apex)));
+                distances.add(apex.distance(target));
+            }
+        fillPacket(query, rays, distances);
+        bvh.gatheredTransmittances(MIN_K, query);
+        double[] answers = new double[rays.size()];
+        for (int r = 0; r < answers.length; ++r)
+            answers[r] = query.getTransmittance(r);
+        return answers;
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittances} and the packet of a
+     * {@link Query}: a closed bundle of many bodies, transparent blockers and blockers beyond the
+     * light, a bundle that keeps no subtree; the packet's bounds.
+     */
+    @Test
+    void testPackets() {
+        Geometries plates = twoPlates();
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(plates);
+        Query query = bvh.newQuery();
+        Point3D apex = new Point3D(0.05, 0.1, -5);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the light between the plates, more than 32 triangles in the pyramid (a subtree is
+        // walked as a packet): each ray passes the transparent plate once, 0.5, and the opaque plate
+        // beyond the light does not count
+        for (double answer : plateBundle(bvh, query, apex, 1))
+            assertEquals(0.5, answer, 1e-12, "TC01: through the transparent plate only");
+        assertTrue(boxesMeeting(plates, query.getFrustum()) > 32, "TC01: more than 32 triangles must meet the pyramid");
+        // TC02: the light above both plates: every ray is blocked, 0
+        for (double answer : plateBundle(bvh, query, apex, 3))
+            assertEquals(0, answer, 0, "TC02: blocked by the opaque plate");
+        // TC03: the light below both plates: nothing in the way, 1
+        for (double answer : plateBundle(bvh, query, apex, -1))
+            assertEquals(1, answer, 0, "TC03: nothing before the light");
+        // TC04: 100 random rays of the TC01 bundle (more than the packet's first room for 16), some
+        // through the triangles' shared edges: each gets the tree's answer for it alone
+        plateBundle(bvh, query, apex, 1);
+        assertTrue(query.isSubtreeGathered(), "TC04: more than 32 triangles: a subtree is kept");
+        Random rnd = new Random(16);
+        List<Ray> rays = new ArrayList<>();
+        List<Double> distances = new ArrayList<>();
+        for (int r = 0; r < 100; ++r) {
+            Point3D target = new Point3D(0.1 + 8 * rnd.nextDouble() - 4, 0.2 + 8 * rnd.nextDouble() - 4, 1);
+            rays.add(new Ray(apex, target.subtract(apex)));
+            distances.add(apex.distance(target));
+        }
+        fillPacket(query, rays, distances);
+        assertEquals(100, query.getPacketSize(), "TC04: the packet holds every ray added");
+        bvh.gatheredTransmittances(MIN_K, query);
+        for (int r = 0; r < rays.size(); ++r)
+            assertEquals(transmittance(bvh, rays.get(r), distances.get(r), MIN_K, bvh.newQuery()),
+                    query.getTransmittance(r), 1e-12, "TC04: ray " + r);
+        // TC05: a narrow bundle (square of half-side 0.01 at z = −4.9, nothing in between) keeps no
+        // subtree, and its packet's rays each let all the light through
+        assertTrue(query.getFrustum().set(0.05, 0.1, -5, 0.05, 0.1, -4.9, 0.01, 0, 0, 0, 0.01, 0, 0),
+                "TC05: the pyramid must be set");
+        bvh.gather(query);
+        assertFalse(query.isSubtreeGathered(), "TC05: no subtree for a bundle that meets nothing");
+        fillPacket(query, rays.subList(0, 1), List.of(0.1));
+        bvh.gatheredTransmittances(MIN_K, query);
+        assertEquals(1, query.getTransmittance(0), 0, "TC05: nothing before the light");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a cleared packet holds no ray, and tracing it answers nothing
+        query.clearPacket();
+        assertEquals(0, query.getPacketSize(), "TC11: a cleared packet is empty");
+        bvh.gatheredTransmittances(MIN_K, query);
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(0),
+                "TC11: an empty packet has no answer"), "packet", "TC11");
+        // TC12: a packet of one ray: the ray's own answer (the light just before the transparent plate: 1)
+        plateBundle(bvh, query, apex, 1);
+        query.clearPacket();
+        query.addToPacket(0.05, 0.1, -5, 0, 0, 1, 5 - 1e-6);
+        bvh.gatheredTransmittances(MIN_K, query);
+        assertEquals(1, query.getTransmittance(0), 0, "TC12: the light just before the plate");
+        // TC13: answers only for rays 0 to size − 1
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(-1),
+                "TC13: ray −1"), "packet", "TC13");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(1),
+                "TC13: ray past the packet"), "packet", "TC13");
     }
 
     /**

@@ -2,6 +2,7 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -343,5 +344,53 @@ class PolygonTest {
             assertNotNull(polygon.findIntersections(ray), at + ": the course's query must hit just inside " + inside);
             assertNotNull(bvh.closestHit(ray, bvh.newQuery()), at + ": the renderer's path must hit just inside " + inside);
         }
+    }
+    /**
+     * Sets a frustum from an apex to a square of half-side 1 around a centre, in the x–y plane.
+     *
+     * @param apex      the apex
+     * @param cz        the height of the square's centre (at x = y = 0)
+     * @param thickness the thickness
+     * @return the frustum
+     */
+    private static ShadowFrustum pyramid(Point3D apex, double cz, double thickness) {
+        ShadowFrustum frustum = new ShadowFrustum();
+        assertTrue(frustum.set(apex.getX(), apex.getY(), apex.getZ(), 0, 0, cz, 1, 0, 0, 0, 1, 0, thickness),
+                "the pyramid must be set");
+        return frustum;
+    }
+
+    /**
+     * Test method for {@link Polygon#mayMeet}: a polygon can meet a shadow bundle only when its plane
+     * crosses the bundle's pyramid.
+     */
+    @Test
+    void testMayMeet() {
+        // the square [−2, 2]² at z = 0, and a triangle in the same plane
+        Polygon square = new Polygon(new Point3D(-2, -2, 0), new Point3D(2, -2, 0), new Point3D(2, 2, 0),
+                new Point3D(-2, 2, 0));
+        Triangle triangle = new Triangle(new Point3D(-2, -2, 0), new Point3D(2, -2, 0), new Point3D(0, 2, 0));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the pyramid above the plane (apex at z = 0.1, square at z = 5): false, for both
+        ShadowFrustum above = pyramid(new Point3D(0, 0, 0.1), 5, 0);
+        assertFalse(square.mayMeet(above), "TC01: the pyramid lies above the polygon's plane");
+        assertFalse(triangle.mayMeet(above), "TC01: the pyramid lies above the triangle's plane");
+        // TC02: the pyramid crosses the plane (apex at z = −1): true
+        ShadowFrustum crossing = pyramid(new Point3D(0, 0, -1), 5, 0);
+        assertTrue(square.mayMeet(crossing), "TC02: the pyramid crosses the polygon");
+        assertTrue(triangle.mayMeet(crossing), "TC02: the pyramid crosses the triangle");
+        // TC03: the pyramid crosses the plane away from the polygon (apex at x = 50): true, the plane
+        // test leaves the sides to the polygon's box
+        assertTrue(square.mayMeet(pyramid(new Point3D(50, 0, -1), 5, 0)), "TC03: the plane is crossed beside the polygon");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the apex on the plane: true
+        assertTrue(square.mayMeet(pyramid(new Point3D(0, 0, 0), 5, 0)), "TC11: the apex on the polygon's plane");
+        // TC12: the apex 0.05 above the plane, in a pyramid 0.1 thick: true (the rays may stray below)
+        assertTrue(square.mayMeet(pyramid(new Point3D(0, 0, 0.05), 5, 0.1)), "TC12: within the thickness");
+        // TC13: a flat pyramid (the set refused): true
+        ShadowFrustum flat = new ShadowFrustum();
+        assertFalse(flat.set(0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1, 0, 0), "TC13: a flat pyramid is refused");
+        assertTrue(square.mayMeet(flat), "TC13: a refused pyramid sets nothing aside");
     }
 }

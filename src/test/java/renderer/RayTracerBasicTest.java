@@ -517,6 +517,61 @@ class RayTracerBasicTest {
     }
 
     /**
+     * The bytes the calling thread allocates while a light's transparency at the origin of the
+     * tracer's floor is asked a number of times (after three times as many calls that warm up).
+     *
+     * @param tracer the tracer
+     * @param light  the light
+     * @param calls  how many times
+     * @return the bytes allocated
+     */
+    private static long shadowPathAllocation(RayTracerBasic tracer, LightSource light, int calls) {
+        com.sun.management.ThreadMXBean threads =
+                (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        Plane floor = (Plane) tracer.scene.geometries.getGeometries().get(0);
+        GeoPoint origin = new GeoPoint(floor, Point3D.ZERO);
+        Vector l = light.getL(Point3D.ZERO);
+        tracer.startPixel(0, 0);
+        double factor = 0;
+        // the first calls make the thread's scratch space (and the JVM may allocate while warming up)
+        for (int c = 0; c < 3 * calls; ++c)
+            factor += tracer.transparency(light, l, FLOOR_NORMAL, origin);
+        threads.getCurrentThreadAllocatedBytes(); // its own first call may allocate
+        long before = threads.getCurrentThreadAllocatedBytes();
+        for (int c = 0; c < calls; ++c)
+            factor += tracer.transparency(light, l, FLOOR_NORMAL, origin);
+        long allocated = threads.getCurrentThreadAllocatedBytes() - before;
+        assertTrue(factor >= 0, "the factors must not be negative");
+        return allocated;
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#transparency}: the shadow path allocates nothing per lit
+     * point — soft or hard shadows, open or closed bundles.
+     */
+    @Test
+    void testTransparencyAllocatesNothing() {
+        PointLight light = squareLight();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: soft shadows, a closed bundle (a half-plane over half the light's square): 1000 lit
+        // points allocate less than 1000 bytes (one object a point would be 16000 or more)
+        RayTracerBasic closed = softTracer(9, halfPlane(0, 10, new Material()));
+        assertTrue(shadowPathAllocation(closed, light, 1000) < 1000, "TC01: a closed bundle must allocate nothing");
+        // TC02: soft shadows, an open bundle (nothing over the floor)
+        RayTracerBasic open = softTracer(9);
+        assertTrue(shadowPathAllocation(open, light, 1000) < 1000, "TC02: an open bundle must allocate nothing");
+        // TC03: hard shadows (one ray), behind a transparent half-plane
+        RayTracerBasic hard = softTracer(9, halfPlane(0, 10, new Material().setKt(0.5)));
+        hard.setSoftShadows(false);
+        assertTrue(shadowPathAllocation(hard, light, 1000) < 1000, "TC03: a hard shadow ray must allocate nothing");
+
+        // ===== Boundary Values Tests =====
+        // TC11: sqrtBeamNum 1 (the centre ray and one more)
+        RayTracerBasic single = softTracer(1, halfPlane(0, 10, new Material()));
+        assertTrue(shadowPathAllocation(single, light, 1000) < 1000, "TC11: one cell must allocate nothing");
+    }
+
+    /**
      * Test method for {@link RayTracerBasic#calcSoftShadows}: the shadow factor is the visible
      * fraction of the light's area.
      */

@@ -1,6 +1,7 @@
 package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -11,7 +12,8 @@ import org.junit.jupiter.api.Test;
 import primitives.Color;
 
 /**
- * Unit tests for {@link ThreadState}: a rendering thread's stream, counters and reused sample room.
+ * Unit tests for {@link ThreadState}: a rendering thread's stream, counters, reused sample room and
+ * light square.
  */
 class ThreadStateTest {
 
@@ -109,5 +111,22 @@ class ThreadStateTest {
         state.startLattice(1);
         assertNull(state.latticeColor(0), "TC11: a one-point lattice must start empty");
         assertNull(state.latticeColor(24), "TC11: the last pixel's point 24 must be forgotten");
+    }
+
+    /** Test method for {@link ThreadState#lightSquare()}: one light square per thread, reused. */
+    @Test
+    void testLightSquare() {
+        ThreadState state = new ThreadState(new SplitMix64(1));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the same light square on every call
+        RayTracerBasic.LightSquare square = state.lightSquare();
+        assertNotNull(square, "TC01: a state must have a light square");
+        assertSame(square, state.lightSquare(), "TC01: the light square must be reused");
+
+        // ===== Boundary Values Tests =====
+        // TC11: another thread's state has a light square of its own
+        assertNotSame(square, new ThreadState(new SplitMix64(1)).lightSquare(),
+                "TC11: two states must not share a light square");
     }
 }
