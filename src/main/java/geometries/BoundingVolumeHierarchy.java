@@ -682,6 +682,12 @@ public final class BoundingVolumeHierarchy {
      * the bins of its parent's split.
      */
     private static final class Builder {
+        /**
+         * About how many nodes a tree has per body, with a little to spare: a fresh array is zeroed,
+         * so room for nodes that are never used costs time (a tree of leaves of up to
+         * {@value #MAX_LEAF_SIZE} bodies has 0.5 to 0.6 nodes per body).
+         */
+        private static final double NODES_PER_BODY = 0.75;
         /** Each thread gets about this many subtrees, so that one large subtree does not hold up the rest. */
         private static final int SUBTREES_PER_THREAD = 4;
 
@@ -840,11 +846,12 @@ public final class BoundingVolumeHierarchy {
             /**
              * Creates a splitter.
              *
-             * @param bodies about how many bodies it splits: its first room for nodes
+             * @param bodies about how many bodies it splits: its first room for nodes is for
+             *               {@link #NODES_PER_BODY} nodes per body (it grows when more are needed)
              * @param limit  subtrees of at most this many bodies are left for the threads (0: none is)
              */
             Splitter(int bodies, int limit) {
-                int nodes = Math.max(1, bodies);
+                int nodes = Math.max(1, (int) (NODES_PER_BODY * bodies));
                 this.bounds = new double[6 * nodes];
                 this.links = new int[2 * nodes];
                 this.limit = limit;
