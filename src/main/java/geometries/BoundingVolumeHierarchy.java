@@ -75,6 +75,13 @@ public final class BoundingVolumeHierarchy {
      * box per triangle would take more memory than the mesh itself.
      */
     private final double[] wholeBounds;
+    /**
+     * Per body of the tree that is a mesh's triangle, in leaf order: where its three vertices lie in
+     * the mesh's array (three ints) and its parallel limit, so that the triangles of a leaf are read
+     * from neighbouring places and not from all over the mesh's array of indices.
+     */
+    private final int[] bodyCorners;
+    private final double[] bodyLimits;
     private final Geometry[] unbounded;
     private final Intersectable[] others;
     /** Whether {@link #gather} culls bodies: false for the brute-force {@link #scan}. */
@@ -148,6 +155,28 @@ public final class BoundingVolumeHierarchy {
         this.bodyOwner = builder.order;
         this.bodyPart = builder.parts;
         this.wholeBounds = wholeBounds(builder.boxes);
+        this.bodyCorners = new int[3 * bodyPart.length];
+        this.bodyLimits = new double[bodyPart.length];
+        runInChunks(bodyPart.length, threads, this::placeTriangles);
+    }
+
+    /**
+     * Sets the vertices' places and the parallel limits of the mesh's triangles among bodies [from, to)
+     * of the tree, in leaf order.
+     *
+     * @param from the first body
+     * @param to   one past the last
+     */
+    private void placeTriangles(int from, int to) {
+        for (int b = from; b < to; ++b) {
+            int part = bodyPart[b];
+            if (part >= 0) {
+                TriangleMesh mesh = (TriangleMesh) owners[bodyOwner[b]];
+                for (int k = 0; k < 3; ++k)
+                    bodyCorners[3 * b + k] = mesh.corner(part, k);
+                bodyLimits[b] = mesh.parallelLimitOf(part);
+            }
+        }
     }
 
     /**
@@ -444,7 +473,8 @@ public final class BoundingVolumeHierarchy {
         int part = bodyPart[b];
         if (part < 0)
             return query.frustum.meetsBox(wholeBounds, 6 * (-1 - part));
-        ((TriangleMesh) owners[bodyOwner[b]]).bounds(part, query.box, 0);
+        Triangle.bounds(((TriangleMesh) owners[bodyOwner[b]]).vertexArray(), bodyCorners[3 * b],
+                bodyCorners[3 * b + 1], bodyCorners[3 * b + 2], query.box, 0);
         pad(query.box, 0);
         return query.frustum.meetsBox(query.box, 0);
     }
@@ -590,7 +620,7 @@ public final class BoundingVolumeHierarchy {
      */
     private boolean visitTriangle(int b, int part, Query query, double ox, double oy, double oz, double dx,
                                   double dy, double dz, boolean transmittance, double minK) {
-        double t = triangleHit(b, part, ox, oy, oz, dx, dy, dz, query.maxT);
+        double t = triangleHit(b, ox, oy, oz, dx, dy, dz, query.maxT);
         if (t == Geometry.NO_HIT)
             return true;
         Geometry mesh = owners[bodyOwner[b]];
@@ -601,13 +631,12 @@ public final class BoundingVolumeHierarchy {
      * The renderer's test of body b of the tree, a mesh's triangle, against a ray.
      *
      * @param b    the body, in leaf order
-     * @param part its triangle in its mesh
      * @param maxT the largest distance that counts
      * @return the distance in (0, maxT], or {@link Geometry#NO_HIT}
      */
-    private double triangleHit(int b, int part, double ox, double oy, double oz, double dx, double dy, double dz,
-                               double maxT) {
-        return ((TriangleMesh) owners[bodyOwner[b]]).triangleHit(part, ox, oy, oz, dx, dy, dz, maxT);
+    private double triangleHit(int b, double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        return TriangleMesh.triangleHit(((TriangleMesh) owners[bodyOwner[b]]).vertexArray(), bodyCorners[3 * b],
+                bodyCorners[3 * b + 1], bodyCorners[3 * b + 2], bodyLimits[b], ox, oy, oz, dx, dy, dz, maxT);
     }
 
     /**

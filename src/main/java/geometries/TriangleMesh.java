@@ -138,7 +138,7 @@ public final class TriangleMesh extends Geometry {
     /** Throws when triangle t is degenerate, naming it. */
     private void requireNotDegenerate(int t) {
         try {
-            Polygon.edgesOf(new Point3D[] { corner(t, 0), corner(t, 1), corner(t, 2) });
+            Polygon.edgesOf(new Point3D[] { vertexOf(t, 0), vertexOf(t, 1), vertexOf(t, 2) });
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("mesh triangle " + t + " (vertices " + indices[3 * t] + ", "
                     + indices[3 * t + 1] + ", " + indices[3 * t + 2] + ") is degenerate: " + e.getMessage(), e);
@@ -203,7 +203,7 @@ public final class TriangleMesh extends Geometry {
      */
     public Triangle getTriangle(int t) {
         requireTriangle(t);
-        Triangle triangle = new Triangle(corner(t, 0), corner(t, 1), corner(t, 2));
+        Triangle triangle = new Triangle(vertexOf(t, 0), vertexOf(t, 1), vertexOf(t, 2));
         triangle.setEmission(getEmission()).setMaterial(getMaterial());
         return triangle;
     }
@@ -219,9 +219,9 @@ public final class TriangleMesh extends Geometry {
      */
     public Vector getNormal(int t) {
         requireTriangle(t);
-        Point3D p2 = corner(t, 1);
+        Point3D p2 = vertexOf(t, 1);
         // normalised twice, as a Triangle's edges' product is and then the plane's copy of it
-        return p2.subtract(corner(t, 0)).crossProduct(corner(t, 2).subtract(p2)).normalize().normalized();
+        return p2.subtract(vertexOf(t, 0)).crossProduct(vertexOf(t, 2).subtract(p2)).normalize().normalized();
     }
 
     /**
@@ -295,7 +295,7 @@ public final class TriangleMesh extends Geometry {
     }
 
     /** {@return vertex k (0, 1 or 2) of triangle t} */
-    private Point3D corner(int t, int k) {
+    private Point3D vertexOf(int t, int k) {
         return getVertex(indices[3 * t + k]);
     }
 
@@ -384,14 +384,29 @@ public final class TriangleMesh extends Geometry {
      * @return the distance in (0, maxT], or {@link #NO_HIT}
      */
     double triangleHit(int t, double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        int a = 3 * indices[3 * t];
-        int b = 3 * indices[3 * t + 1];
-        int c = 3 * indices[3 * t + 2];
+        return triangleHit(vertices, corner(t, 0), corner(t, 1), corner(t, 2), parallelLimits[t],
+                ox, oy, oz, dx, dy, dz, maxT);
+    }
+
+    /**
+     * The renderer's test of a triangle whose vertices lie in an array: the {@link Triangle}'s test on
+     * the same numbers.
+     *
+     * @param vertices      the vertices' coordinates, three doubles each
+     * @param a             where the first vertex's x lies in vertices
+     * @param b             where the second vertex's x lies
+     * @param c             where the third vertex's x lies
+     * @param parallelLimit the triangle's parallel limit, see {@link Triangle#parallelLimit}
+     * @param maxT          the largest distance that counts
+     * @return the distance in (0, maxT], or {@link #NO_HIT}
+     */
+    static double triangleHit(double[] vertices, int a, int b, int c, double parallelLimit, double ox, double oy,
+                              double oz, double dx, double dy, double dz, double maxT) {
         double p1x = vertices[a];
         double p1y = vertices[a + 1];
         double p1z = vertices[a + 2];
         return Triangle.intersect(p1x, p1y, p1z, vertices[b] - p1x, vertices[b + 1] - p1y, vertices[b + 2] - p1z,
-                vertices[c] - p1x, vertices[c + 1] - p1y, vertices[c + 2] - p1z, parallelLimits[t],
+                vertices[c] - p1x, vertices[c + 1] - p1y, vertices[c + 2] - p1z, parallelLimit,
                 ox, oy, oz, dx, dy, dz, maxT);
     }
 
@@ -403,7 +418,28 @@ public final class TriangleMesh extends Geometry {
      * @param b      where the box's six numbers go
      */
     void bounds(int t, double[] target, int b) {
-        Triangle.bounds(vertices, 3 * indices[3 * t], 3 * indices[3 * t + 1], 3 * indices[3 * t + 2], target, b);
+        Triangle.bounds(vertices, corner(t, 0), corner(t, 1), corner(t, 2), target, b);
+    }
+
+    /**
+     * Where a vertex of a triangle lies in the vertices' array.
+     *
+     * @param t the triangle's index
+     * @param k which of its vertices: 0, 1 or 2
+     * @return the place of the vertex's x in {@link #vertexArray()}
+     */
+    int corner(int t, int k) {
+        return 3 * indices[3 * t + k];
+    }
+
+    /** {@return the vertices' coordinates, three doubles each: the mesh's own array, for reading only} */
+    double[] vertexArray() {
+        return vertices;
+    }
+
+    /** {@return triangle t's parallel limit, see {@link Triangle#parallelLimit}} */
+    double parallelLimitOf(int t) {
+        return parallelLimits[t];
     }
 
     @Override
