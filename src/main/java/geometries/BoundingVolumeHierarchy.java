@@ -26,9 +26,10 @@ import static primitives.Util.requireNonNull;
  * split axis; the two children of a node are neighbours) and is walked with an explicit stack: at an
  * inner node both children's boxes are tested, and the nearer child (by the split axis) is entered
  * first. It is built top down with the binned surface-area heuristic. A {@link TriangleMesh} gives
- * the tree one body per triangle, held by reference (the mesh and the triangle's index, two ints),
- * with no object and no copy of its data per triangle: the tree's triangles are tested straight
- * from the mesh's flat arrays. Other bodies (a {@link Triangle} object among them) are tested
+ * the tree one body per triangle, held by reference (the mesh and the triangle's index, and in leaf
+ * order the places of its vertices in the mesh's array and its parallel limit), with no object and
+ * no copy of its vertices per triangle: the tree's triangles are tested straight from the mesh's
+ * vertex array. Other bodies (a {@link Triangle} object among them) are tested
  * through their own methods. Unbounded bodies (planes, tubes) stay outside the tree and are tested
  * on every ray, as are intersectables that are not {@link Geometry}s.
  * <p>
