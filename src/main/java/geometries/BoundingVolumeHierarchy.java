@@ -26,11 +26,10 @@ import static primitives.Util.requireNonNull;
  * split axis; the two children of a node are neighbours) and is walked with an explicit stack: at an
  * inner node both children's boxes are tested, and the nearer child (by the split axis) is entered
  * first. It is built top down with the binned surface-area heuristic. A {@link TriangleMesh} gives
- * the tree one body per triangle, held by reference (the mesh and the triangle's index, and in leaf
- * order the places of its vertices in the mesh's array and its parallel limit), with no object and
- * no copy of its vertices per triangle: the tree's triangles are tested straight from the mesh's
- * vertex array. Other bodies (a {@link Triangle} object among them) are tested
- * through their own methods. Unbounded bodies (planes, tubes) stay outside the tree and are tested
+ * the tree one body per triangle, held by reference (the mesh and the triangle's index, two ints,
+ * and its box in floats), with no object and no copy of its vertices per triangle: the tree's
+ * triangles are tested straight from the mesh's arrays. Other bodies (a {@link Triangle} object
+ * among them) are tested through their own methods. Unbounded bodies (planes, tubes) stay outside the tree and are tested
  * on every ray, as are intersectables that are not {@link Geometry}s.
  * <p>
  * The shadow rays of one soft shadow can be traced as a bundle: {@link #gather} walks the tree once
@@ -71,18 +70,16 @@ public final class BoundingVolumeHierarchy {
      */
     private final int[] bodyPart;
     /**
-     * The padded boxes of the tree's bodies that are whole geometries, not a mesh's triangles. A
-     * triangle's box is computed again from its mesh when it is needed (see {@link #bodyMeets}): a
-     * box per triangle would take more memory than the mesh itself.
+     * The padded boxes of the tree's bodies that are whole geometries, not a mesh's triangles (whose
+     * boxes are in {@link #triangleBounds}).
      */
     private final double[] wholeBounds;
     /**
-     * Per body of the tree that is a mesh's triangle, in leaf order: where its three vertices lie in
-     * the mesh's array (three ints) and its parallel limit, so that the triangles of a leaf are read
-     * from neighbouring places and not from all over the mesh's array of indices.
+     * Per body of the tree that is a mesh's triangle, in leaf order: its padded box in floats, rounded
+     * outward (so it holds the box in doubles), for {@link #bodyMeets}: half the memory of doubles.
+     * A bundle may then gather a triangle more, never one less: every ray's answer stays the same.
      */
-    private final int[] bodyCorners;
-    private final double[] bodyLimits;
+    private final float[] triangleBounds;
     private final Geometry[] unbounded;
     private final Intersectable[] others;
     /** Whether {@link #gather} culls bodies: false for the brute-force {@link #scan}. */
@@ -156,27 +153,27 @@ public final class BoundingVolumeHierarchy {
         this.bodyOwner = builder.order;
         this.bodyPart = builder.parts;
         this.wholeBounds = wholeBounds(builder.boxes);
-        this.bodyCorners = new int[3 * bodyPart.length];
-        this.bodyLimits = new double[bodyPart.length];
-        runInChunks(bodyPart.length, threads, this::placeTriangles);
+        this.triangleBounds = new float[6 * bodyPart.length];
+        runInChunks(bodyPart.length, threads, (from, to) -> placeTriangles(builder.boxes, from, to));
     }
 
     /**
-     * Sets the vertices' places and the parallel limits of the mesh's triangles among bodies [from, to)
-     * of the tree, in leaf order.
+     * Sets the boxes of the mesh's triangles among bodies [from, to) of the tree, in leaf order.
      *
-     * @param from the first body
-     * @param to   one past the last
+     * @param boxes the padded box of every body of the tree, in leaf order
+     * @param from  the first body
+     * @param to    one past the last
      */
-    private void placeTriangles(int from, int to) {
+    private void placeTriangles(double[] boxes, int from, int to) {
         for (int b = from; b < to; ++b) {
             int part = bodyPart[b];
-            if (part >= 0) {
-                TriangleMesh mesh = (TriangleMesh) owners[bodyOwner[b]];
-                for (int k = 0; k < 3; ++k)
-                    bodyCorners[3 * b + k] = mesh.corner(part, k);
-                bodyLimits[b] = mesh.parallelLimitOf(part);
-            }
+            if (part >= 0)
+                for (int k = 0; k < 3; ++k) {
+                    float low = (float) boxes[6 * b + k];
+                    float high = (float) boxes[6 * b + 3 + k];
+                    triangleBounds[6 * b + k] = low > boxes[6 * b + k] ? Math.nextDown(low) : low;
+                    triangleBounds[6 * b + 3 + k] = high < boxes[6 * b + 3 + k] ? Math.nextUp(high) : high;
+                }
         }
     }
 
@@ -464,7 +461,7 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Whether the padded box of body b of the tree meets the query's frustum. A mesh's triangle's box
-     * is computed from the mesh, as the build computed it.
+     * is kept in floats, rounded outward: a little larger, never smaller.
      *
      * @param query this thread's scratch space, its frustum set
      * @param b     the body, in leaf order
@@ -474,9 +471,8 @@ public final class BoundingVolumeHierarchy {
         int part = bodyPart[b];
         if (part < 0)
             return query.frustum.meetsBox(wholeBounds, 6 * (-1 - part));
-        Triangle.bounds(((TriangleMesh) owners[bodyOwner[b]]).vertexArray(), bodyCorners[3 * b],
-                bodyCorners[3 * b + 1], bodyCorners[3 * b + 2], query.box, 0);
-        pad(query.box, 0);
+        for (int k = 0; k < 6; ++k)
+            query.box[k] = triangleBounds[6 * b + k];
         return query.frustum.meetsBox(query.box, 0);
     }
 
@@ -621,7 +617,7 @@ public final class BoundingVolumeHierarchy {
      */
     private boolean visitTriangle(int b, int part, Query query, double ox, double oy, double oz, double dx,
                                   double dy, double dz, boolean transmittance, double minK) {
-        double t = triangleHit(b, ox, oy, oz, dx, dy, dz, query.maxT);
+        double t = triangleHit(b, part, ox, oy, oz, dx, dy, dz, query.maxT);
         if (t == Geometry.NO_HIT)
             return true;
         Geometry mesh = owners[bodyOwner[b]];
@@ -632,12 +628,13 @@ public final class BoundingVolumeHierarchy {
      * The renderer's test of body b of the tree, a mesh's triangle, against a ray.
      *
      * @param b    the body, in leaf order
+     * @param part its triangle in its mesh
      * @param maxT the largest distance that counts
      * @return the distance in (0, maxT], or {@link Geometry#NO_HIT}
      */
-    private double triangleHit(int b, double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        return TriangleMesh.triangleHit(((TriangleMesh) owners[bodyOwner[b]]).vertexArray(), bodyCorners[3 * b],
-                bodyCorners[3 * b + 1], bodyCorners[3 * b + 2], bodyLimits[b], ox, oy, oz, dx, dy, dz, maxT);
+    private double triangleHit(int b, int part, double ox, double oy, double oz, double dx, double dy, double dz,
+                               double maxT) {
+        return ((TriangleMesh) owners[bodyOwner[b]]).triangleHit(part, ox, oy, oz, dx, dy, dz, maxT);
     }
 
     /**

@@ -147,9 +147,9 @@ public final class TriangleMesh extends Geometry {
 
     /** {@return triangle t's parallel limit, the {@link Triangle}'s} */
     private double parallelLimit(int t) {
-        int a = 3 * indices[3 * t];
-        int b = 3 * indices[3 * t + 1];
-        int c = 3 * indices[3 * t + 2];
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
         return Triangle.parallelLimit(vertices[b] - vertices[a], vertices[b + 1] - vertices[a + 1],
                 vertices[b + 2] - vertices[a + 2], vertices[c] - vertices[a], vertices[c + 1] - vertices[a + 1],
                 vertices[c + 2] - vertices[a + 2]);
@@ -257,9 +257,9 @@ public final class TriangleMesh extends Geometry {
      * @return the distance, or +∞ when the point is off the triangle
      */
     private double distanceOnTriangle(int t, Point3D point) {
-        int a = 3 * indices[3 * t];
-        int b = 3 * indices[3 * t + 1];
-        int c = 3 * indices[3 * t + 2];
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
         double e1x = vertices[b] - vertices[a];
         double e1y = vertices[b + 1] - vertices[a + 1];
         double e1z = vertices[b + 2] - vertices[a + 2];
@@ -384,29 +384,14 @@ public final class TriangleMesh extends Geometry {
      * @return the distance in (0, maxT], or {@link #NO_HIT}
      */
     double triangleHit(int t, double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        return triangleHit(vertices, corner(t, 0), corner(t, 1), corner(t, 2), parallelLimits[t],
-                ox, oy, oz, dx, dy, dz, maxT);
-    }
-
-    /**
-     * The renderer's test of a triangle whose vertices lie in an array: the {@link Triangle}'s test on
-     * the same numbers.
-     *
-     * @param vertices      the vertices' coordinates, three doubles each
-     * @param a             where the first vertex's x lies in vertices
-     * @param b             where the second vertex's x lies
-     * @param c             where the third vertex's x lies
-     * @param parallelLimit the triangle's parallel limit, see {@link Triangle#parallelLimit}
-     * @param maxT          the largest distance that counts
-     * @return the distance in (0, maxT], or {@link #NO_HIT}
-     */
-    static double triangleHit(double[] vertices, int a, int b, int c, double parallelLimit, double ox, double oy,
-                              double oz, double dx, double dy, double dz, double maxT) {
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
         double p1x = vertices[a];
         double p1y = vertices[a + 1];
         double p1z = vertices[a + 2];
         return Triangle.intersect(p1x, p1y, p1z, vertices[b] - p1x, vertices[b + 1] - p1y, vertices[b + 2] - p1z,
-                vertices[c] - p1x, vertices[c + 1] - p1y, vertices[c + 2] - p1z, parallelLimit,
+                vertices[c] - p1x, vertices[c + 1] - p1y, vertices[c + 2] - p1z, parallelLimits[t],
                 ox, oy, oz, dx, dy, dz, maxT);
     }
 
@@ -421,25 +406,9 @@ public final class TriangleMesh extends Geometry {
         Triangle.bounds(vertices, corner(t, 0), corner(t, 1), corner(t, 2), target, b);
     }
 
-    /**
-     * Where a vertex of a triangle lies in the vertices' array.
-     *
-     * @param t the triangle's index
-     * @param k which of its vertices: 0, 1 or 2
-     * @return the place of the vertex's x in {@link #vertexArray()}
-     */
-    int corner(int t, int k) {
+    /** {@return where vertex k (0, 1 or 2) of triangle t lies in the vertices' array: the place of its x} */
+    private int corner(int t, int k) {
         return 3 * indices[3 * t + k];
-    }
-
-    /** {@return the vertices' coordinates, three doubles each: the mesh's own array, for reading only} */
-    double[] vertexArray() {
-        return vertices;
-    }
-
-    /** {@return triangle t's parallel limit, see {@link Triangle#parallelLimit}} */
-    double parallelLimitOf(int t) {
-        return parallelLimits[t];
     }
 
     @Override
