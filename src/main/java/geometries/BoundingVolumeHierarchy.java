@@ -25,10 +25,12 @@ import static primitives.Util.requireNonNull;
  * The tree lives in flat arrays (a node's box, its first body or first child, its body count and
  * split axis; the two children of a node are neighbours) and is walked with an explicit stack: at an
  * inner node both children's boxes are tested, and the nearer child (by the split axis) is entered
- * first. It is built top down with the binned surface-area heuristic. Plain {@link Triangle}s are
- * tested straight from one array of their data in leaf order; other bodies through their own
- * methods. Unbounded bodies (planes, tubes) stay outside the tree and are tested on every ray, as
- * are intersectables that are not {@link Geometry}s.
+ * first. It is built top down with the binned surface-area heuristic. A {@link TriangleMesh} gives
+ * the tree one body per triangle, held by reference (the mesh and the triangle's index, two ints,
+ * and its box in floats), with no object and no copy of its vertices per triangle: the tree's
+ * triangles are tested straight from the mesh's arrays. Other bodies (a {@link Triangle} object
+ * among them) are tested through their own methods. Unbounded bodies (planes, tubes) stay outside the tree and are tested
+ * on every ray, as are intersectables that are not {@link Geometry}s.
  * <p>
  * The shadow rays of one soft shadow can be traced as a bundle: {@link #gather} walks the tree once
  * with the bundle's pyramid (a {@link ShadowFrustum}) and keeps the few bodies that may meet it, or
@@ -59,15 +61,26 @@ public final class BoundingVolumeHierarchy {
     /** The composite the hierarchy was built over, and the version of its contents then. */
     private final Intersectable source;
     private final long version;
-    private final Geometry[] bodies;
-    /** The padded box of every body of the tree, in leaf order. */
-    private final double[] bodyBounds;
-    /** Whether each body of the tree is a plain {@link Triangle}, tested from {@link #triangleData}. */
-    private final boolean[] triangle;
-    /** Whether each body of the tree is a {@link Polygon}: {@link #gather} then also asks its plane. */
-    private final boolean[] polygon;
-    /** The intersection data of the tree's triangles, {@link Triangle#DATA_LENGTH} doubles per body. */
-    private final double[] triangleData;
+    /** The geometries whose bodies are in the tree: each a body, or a mesh of many. */
+    private final Geometry[] owners;
+    /** Per body of the tree, in leaf order: its geometry in {@link #owners}. */
+    private final int[] bodyOwner;
+    /**
+     * Per body of the tree, in leaf order: its triangle when its geometry is a mesh; else −1 − the
+     * place of its box in {@link #wholeBounds}.
+     */
+    private final int[] bodyPart;
+    /**
+     * The padded boxes of the tree's bodies that are whole geometries, not a mesh's triangles (whose
+     * boxes are in {@link #triangleBounds}).
+     */
+    private final double[] wholeBounds;
+    /**
+     * Per body of the tree that is a mesh's triangle, in leaf order: its padded box in floats, rounded
+     * outward (so it holds the box in doubles), for {@link #bodyMeets}: half the memory of doubles.
+     * A bundle may then gather a triangle more, never one less: every ray's answer stays the same.
+     */
+    private final float[] triangleBounds;
     private final Geometry[] unbounded;
     private final Intersectable[] others;
     /** Whether {@link #gather} culls bodies: false for the brute-force {@link #scan}. */
@@ -89,8 +102,12 @@ public final class BoundingVolumeHierarchy {
         private final int[] stack;
         private double maxT;
         private Geometry geometry;
+        /** The part of {@link #geometry} hit (a mesh's triangle), or −1. */
+        private int part;
         private double ktr;
         private final ShadowFrustum frustum = new ShadowFrustum();
+        /** A body's box, computed for {@link #bodyMeets}. */
+        private final double[] box = new double[6];
         /** The tree's bodies {@link #gather} found, and how many: -1 when they were too many. */
         private final int[] gathered = new int[MAX_GATHERED];
         private int gatheredCount;
@@ -212,43 +229,62 @@ public final class BoundingVolumeHierarchy {
             infinite.addAll(bounded);
             bounded.clear();
         }
-        Geometry[] flat = bounded.toArray(new Geometry[0]);
+        this.owners = bounded.toArray(new Geometry[0]);
         this.unbounded = infinite.toArray(new Geometry[0]);
         this.others = generic.toArray(new Intersectable[0]);
         this.culling = tree;
-        Builder builder = new Builder(flat, threads);
+        Builder builder = new Builder(owners, threads);
         builder.build();
-        this.bodyBounds = builder.boxes;
         this.nodeBounds = builder.nodeBounds;
         this.nodeLinks = builder.nodeLinks;
         this.nodesCount = builder.nodesCount;
         this.depth = builder.depth;
-        this.bodies = new Geometry[flat.length];
-        this.triangle = new boolean[flat.length];
-        this.polygon = new boolean[flat.length];
-        this.triangleData = new double[Triangle.DATA_LENGTH * flat.length];
-        runInChunks(flat.length, threads, (from, to) -> placeBodies(flat, builder.order, from, to));
+        this.bodyOwner = builder.order;
+        this.bodyPart = builder.parts;
+        this.wholeBounds = wholeBounds(builder.boxes);
+        this.triangleBounds = new float[6 * bodyPart.length];
+        runInChunks(bodyPart.length, threads, (from, to) -> placeTriangles(builder.boxes, from, to));
     }
 
     /**
-     * Puts bodies [from, to) of the tree in their places in leaf order, and the data of the plain
-     * triangles among them in {@link #triangleData}.
+     * Sets the boxes of the mesh's triangles among bodies [from, to) of the tree, in leaf order.
      *
-     * @param flat  the bodies as they were found in the composite
-     * @param order the places in flat of the bodies in leaf order
-     * @param from  the first place in leaf order
+     * @param boxes the padded box of every body of the tree, in leaf order
+     * @param from  the first body
      * @param to    one past the last
      */
-    private void placeBodies(Geometry[] flat, int[] order, int from, int to) {
+    private void placeTriangles(double[] boxes, int from, int to) {
         for (int b = from; b < to; ++b) {
-            Geometry body = flat[order[b]];
-            bodies[b] = body;
-            polygon[b] = body instanceof Polygon;
-            if (body.getClass() == Triangle.class) {
-                triangle[b] = true;
-                ((Triangle) body).copyData(triangleData, Triangle.DATA_LENGTH * b);
-            }
+            int part = bodyPart[b];
+            if (part >= 0)
+                for (int k = 0; k < 3; ++k) {
+                    float low = (float) boxes[6 * b + k];
+                    float high = (float) boxes[6 * b + 3 + k];
+                    triangleBounds[6 * b + k] = low > boxes[6 * b + k] ? Math.nextDown(low) : low;
+                    triangleBounds[6 * b + 3 + k] = high < boxes[6 * b + 3 + k] ? Math.nextUp(high) : high;
+                }
         }
+    }
+
+    /**
+     * Keeps the boxes of the tree's whole bodies, and numbers them in {@link #bodyPart}.
+     *
+     * @param boxes the padded box of every body of the tree, in leaf order
+     * @return the boxes of the bodies that are not a mesh's triangles, in leaf order
+     */
+    private double[] wholeBounds(double[] boxes) {
+        int count = 0;
+        for (int part : bodyPart)
+            if (part < 0)
+                ++count;
+        double[] whole = new double[6 * count];
+        int slot = 0;
+        for (int b = 0; b < bodyPart.length; ++b)
+            if (bodyPart[b] < 0) {
+                System.arraycopy(boxes, 6 * b, whole, 6 * slot, 6);
+                bodyPart[b] = -1 - slot++;
+            }
+        return whole;
     }
 
     /**
@@ -385,7 +421,7 @@ public final class BoundingVolumeHierarchy {
 
     /** {@return the number of bodies in the tree} */
     public int getBoundedCount() {
-        return bodies.length;
+        return bodyOwner.length;
     }
 
     /**
@@ -401,7 +437,7 @@ public final class BoundingVolumeHierarchy {
         query.maxT = Geometry.NO_HIT;
         query.geometry = null;
         traverse(query, p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), false, 0);
-        GeoPoint nearest = query.geometry == null ? null : new GeoPoint(query.geometry, ray.getPoint(query.maxT));
+        GeoPoint nearest = query.geometry == null ? null : query.geometry.hitPoint(ray, query.maxT, query.part);
         for (Intersectable other : others)
             nearest = nearer(ray, nearest, other.findGeoIntersections(ray));
         return nearest;
@@ -502,18 +538,50 @@ public final class BoundingVolumeHierarchy {
         }
     }
 
-    /**
-     * Adds a leaf's bodies that may meet the frustum (their boxes, and for a polygon its plane; other
-     * bodies are not read, only their boxes); false when there is no room for them.
-     */
+    /** Adds a leaf's bodies that may meet the frustum ({@link #bodyMeets}); false when there is no room for them. */
     private boolean gatherLeaf(Query query, int first, int count) {
         for (int b = first; b < first + count; ++b)
-            if (query.frustum.meetsBox(bodyBounds, 6 * b) && (!polygon[b] || bodies[b].mayMeet(query.frustum))) {
+            if (bodyMeets(query, b)) {
                 if (query.gatheredCount == MAX_GATHERED)
                     return false;
                 query.gathered[query.gatheredCount++] = b;
             }
         return true;
+    }
+
+    /**
+     * Whether body b of the tree may meet the query's frustum: its padded box does, and then the body
+     * itself may ({@link Geometry#mayMeet}: a polygon's plane, and a mesh's triangle's). A mesh's
+     * triangle's box is kept in floats, rounded outward: a little larger, never smaller.
+     *
+     * @param query this thread's scratch space, its frustum set
+     * @param b     the body, in leaf order
+     * @return false when no ray of the bundle can meet the body
+     */
+    private boolean bodyMeets(Query query, int b) {
+        int part = bodyPart[b];
+        ShadowFrustum frustum = query.frustum;
+        if (part < 0)
+            return frustum.meetsBox(wholeBounds, 6 * (-1 - part)) && owners[bodyOwner[b]].mayMeet(frustum);
+        for (int k = 0; k < 6; ++k)
+            query.box[k] = triangleBounds[6 * b + k];
+        return frustum.meetsBox(query.box, 0) && ((TriangleMesh) owners[bodyOwner[b]]).mayMeet(part, frustum);
+    }
+
+    /**
+     * Grows a body's box by {@link #PADDING}, so that flat bodies are hit.
+     *
+     * @param box the array
+     * @param b   where the box lies in it
+     */
+    private static void pad(double[] box, int b) {
+        for (int k = 0; k < 3; ++k) {
+            double low = box[b + k];
+            double high = box[b + 3 + k];
+            double pad = PADDING * (1 + Math.abs(low) + Math.abs(high));
+            box[b + k] = low - pad;
+            box[b + 3 + k] = high + pad;
+        }
     }
 
     /**
@@ -778,17 +846,35 @@ public final class BoundingVolumeHierarchy {
     /** {@link #visit} for body b of the tree. */
     private boolean visitBody(int b, Query query, double ox, double oy, double oz, double dx, double dy, double dz,
                               boolean transmittance, double minK) {
-        return triangle[b] ? visitTriangle(b, query, ox, oy, oz, dx, dy, dz, transmittance, minK)
-                : visit(bodies[b], query, ox, oy, oz, dx, dy, dz, transmittance, minK);
+        int part = bodyPart[b];
+        return part < 0 ? visit(owners[bodyOwner[b]], query, ox, oy, oz, dx, dy, dz, transmittance, minK)
+                : visitTriangle(b, part, query, ox, oy, oz, dx, dy, dz, transmittance, minK);
     }
 
-    /** {@link #visit} for a triangle of the tree, tested from its data; its material is read only on a hit. */
-    private boolean visitTriangle(int b, Query query, double ox, double oy, double oz, double dx, double dy,
-                                  double dz, boolean transmittance, double minK) {
-        double t = Triangle.intersect(triangleData, Triangle.DATA_LENGTH * b, ox, oy, oz, dx, dy, dz, query.maxT);
+    /**
+     * {@link #visit} for a mesh's triangle of the tree, tested from the mesh's arrays; the mesh's
+     * material is read only on a hit.
+     */
+    private boolean visitTriangle(int b, int part, Query query, double ox, double oy, double oz, double dx,
+                                  double dy, double dz, boolean transmittance, double minK) {
+        double t = triangleHit(b, part, ox, oy, oz, dx, dy, dz, query.maxT);
         if (t == Geometry.NO_HIT)
             return true;
-        return transmittance ? dim(query, bodies[b].getMaterial().getKt(), minK) : keepNearer(query, t, bodies[b]);
+        Geometry mesh = owners[bodyOwner[b]];
+        return transmittance ? dim(query, mesh.getMaterial().getKt(), minK) : keepNearer(query, t, mesh, part);
+    }
+
+    /**
+     * The renderer's test of body b of the tree, a mesh's triangle, against a ray.
+     *
+     * @param b    the body, in leaf order
+     * @param part its triangle in its mesh
+     * @param maxT the largest distance that counts
+     * @return the distance in (0, maxT], or {@link Geometry#NO_HIT}
+     */
+    private double triangleHit(int b, int part, double ox, double oy, double oz, double dx, double dy, double dz,
+                               double maxT) {
+        return ((TriangleMesh) owners[bodyOwner[b]]).triangleHit(part, ox, oy, oz, dx, dy, dz, maxT);
     }
 
     /**
@@ -800,7 +886,7 @@ public final class BoundingVolumeHierarchy {
     private static boolean visit(Geometry body, Query query, double ox, double oy, double oz,
                                  double dx, double dy, double dz, boolean transmittance, double minK) {
         return transmittance ? dim(query, body.transmittance(ox, oy, oz, dx, dy, dz, query.maxT), minK)
-                : keepNearer(query, body.nearestHit(ox, oy, oz, dx, dy, dz, query.maxT), body);
+                : keepNearer(query, body.nearestHit(ox, oy, oz, dx, dy, dz, query.maxT), body, -1);
     }
 
     /** Multiplies the query's ktr by a factor; false once the light is blocked (below minK or 0). */
@@ -809,11 +895,12 @@ public final class BoundingVolumeHierarchy {
         return query.ktr > 0 && query.ktr >= minK;
     }
 
-    /** Keeps a body hit at distance t when it is nearer than the nearest so far; always true. */
-    private static boolean keepNearer(Query query, double t, Geometry body) {
+    /** Keeps a body (and its part, or −1) hit at distance t when it is nearer than the nearest so far; always true. */
+    private static boolean keepNearer(Query query, double t, Geometry body, int part) {
         if (t < query.maxT) {
             query.maxT = t;
             query.geometry = body;
+            query.part = part;
         }
         return true;
     }
@@ -862,10 +949,16 @@ public final class BoundingVolumeHierarchy {
      * the bins of its parent's split.
      */
     private static final class Builder {
+        /**
+         * About how many nodes a tree has per body, with a little to spare: a fresh array is zeroed,
+         * so room for nodes that are never used costs time (a tree of leaves of up to
+         * {@value #MAX_LEAF_SIZE} bodies has 0.5 to 0.6 nodes per body).
+         */
+        private static final double NODES_PER_BODY = 0.75;
         /** Each thread gets about this many subtrees, so that one large subtree does not hold up the rest. */
         private static final int SUBTREES_PER_THREAD = 4;
 
-        private final Geometry[] bodies;
+        private final Geometry[] owners;
         private final int threads;
         /**
          * The padded box and the centroid of every body, in the order of {@link #order}: once built,
@@ -873,8 +966,12 @@ public final class BoundingVolumeHierarchy {
          */
         final double[] boxes;
         private final double[] centroids;
-        /** The bodies (their places in {@link #bodies}), partitioned into leaf order: a result. */
+        /**
+         * The bodies: each one's geometry (its place in {@link #owners}) and its part (a mesh's
+         * triangle, or −1), partitioned into leaf order: results.
+         */
         final int[] order;
+        final int[] parts;
         /** The subtrees left for the threads, four ints each: node, first body, end, level. */
         private int[] subtrees = new int[4 * SUBTREES_PER_THREAD];
         private int subtreesCount;
@@ -884,19 +981,34 @@ public final class BoundingVolumeHierarchy {
         int nodesCount;
         int depth;
 
-        Builder(Geometry[] bodies, int threads) {
-            this.bodies = bodies;
+        Builder(Geometry[] owners, int threads) {
+            this.owners = owners;
             this.threads = threads;
-            int count = bodies.length;
+            int count = 0;
+            for (Geometry owner : owners)
+                count += owner instanceof TriangleMesh mesh ? mesh.getTrianglesCount() : 1;
             this.boxes = new double[6 * count];
             this.centroids = new double[3 * count];
             this.order = new int[count];
+            this.parts = new int[count];
             this.nodeBounds = new double[0];
             this.nodeLinks = new int[0];
+            int i = 0;
+            for (int o = 0; o < owners.length; ++o) {
+                if (owners[o] instanceof TriangleMesh mesh)
+                    for (int t = 0; t < mesh.getTrianglesCount(); ++t, ++i) {
+                        order[i] = o;
+                        parts[i] = t;
+                    }
+                else {
+                    order[i] = o;
+                    parts[i++] = -1;
+                }
+            }
         }
 
         void build() {
-            int count = bodies.length;
+            int count = order.length;
             if (count == 0)
                 return;
             runInChunks(count, threads, this::measure);
@@ -920,16 +1032,13 @@ public final class BoundingVolumeHierarchy {
         /** Sets the padded boxes and the centroids of bodies [from, to). */
         private void measure(int from, int to) {
             for (int i = from; i < to; ++i) {
-                bodies[i].bounds(boxes, 6 * i);
-                for (int k = 0; k < 3; ++k) {
-                    double low = boxes[6 * i + k];
-                    double high = boxes[6 * i + 3 + k];
-                    double pad = PADDING * (1 + Math.abs(low) + Math.abs(high));
-                    boxes[6 * i + k] = low - pad;
-                    boxes[6 * i + 3 + k] = high + pad;
-                    centroids[3 * i + k] = (low + high) / 2;
-                }
-                order[i] = i;
+                if (parts[i] < 0)
+                    owners[order[i]].bounds(boxes, 6 * i);
+                else
+                    ((TriangleMesh) owners[order[i]]).bounds(parts[i], boxes, 6 * i);
+                for (int k = 0; k < 3; ++k)
+                    centroids[3 * i + k] = (boxes[6 * i + k] + boxes[6 * i + 3 + k]) / 2;
+                pad(boxes, 6 * i);
             }
         }
 
@@ -1004,11 +1113,12 @@ public final class BoundingVolumeHierarchy {
             /**
              * Creates a splitter.
              *
-             * @param bodies about how many bodies it splits: its first room for nodes
+             * @param bodies about how many bodies it splits: its first room for nodes is for
+             *               {@link #NODES_PER_BODY} nodes per body (it grows when more are needed)
              * @param limit  subtrees of at most this many bodies are left for the threads (0: none is)
              */
             Splitter(int bodies, int limit) {
-                int nodes = Math.max(1, bodies);
+                int nodes = Math.max(1, (int) (NODES_PER_BODY * bodies));
                 this.bounds = new double[6 * nodes];
                 this.links = new int[2 * nodes];
                 this.limit = limit;
@@ -1174,9 +1284,12 @@ public final class BoundingVolumeHierarchy {
 
             /** Swaps the bodies at places i and j, with their boxes and centroids. */
             private void swap(int i, int j) {
-                int body = order[i];
+                int owner = order[i];
                 order[i] = order[j];
-                order[j] = body;
+                order[j] = owner;
+                int part = parts[i];
+                parts[i] = parts[j];
+                parts[j] = part;
                 swapRun(boxes, 6 * i, 6 * j, 6);
                 swapRun(centroids, 3 * i, 3 * j, 3);
             }

@@ -121,6 +121,19 @@ public abstract class Geometry extends Intersectable {
     }
 
     /**
+     * The hit a hierarchy's closest-hit query found on this body at a distance along a ray.
+     *
+     * @param ray  the ray
+     * @param t    the distance of the hit
+     * @param part which part of the body was hit (a {@link TriangleMesh}'s triangle), or −1 when the
+     *             body was tested as a whole
+     * @return the hit: the body and the point (the default ignores the part)
+     */
+    GeoPoint hitPoint(Ray ray, double t, int part) {
+        return new GeoPoint(this, ray.getPoint(t));
+    }
+
+    /**
      * The intersection list of a body a ray crosses at two distances (a sphere, a tube).
      *
      * @param ray         the ray

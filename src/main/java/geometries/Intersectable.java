@@ -4,6 +4,7 @@ import java.util.List;
 
 import primitives.Point3D;
 import primitives.Ray;
+import primitives.Vector;
 
 import static primitives.Util.requireNonNull;
 
@@ -36,6 +37,16 @@ public abstract class Intersectable {
         public GeoPoint(Geometry geometry, Point3D point) {
             this.geometry = geometry;
             this.point = requireNonNull(point, "intersection point");
+        }
+
+        /**
+         * The unit normal of the surface at the point, for shading: the geometry's normal there. A
+         * body made of many faces ({@link TriangleMesh}) answers for the face that was hit.
+         *
+         * @return the outward unit normal at the point
+         */
+        public Vector getNormal() {
+            return geometry.getNormal(point);
         }
 
         /** Equal when they name the same geometry object and equal points. */

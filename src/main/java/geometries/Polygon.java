@@ -74,7 +74,7 @@ public class Polygon extends Geometry {
      * {@link #EDGE_TOLERANCE} of the longest edge: the test is relative, so a polygon of any size is
      * judged by its shape.
      */
-    private static Vector[] edgesOf(Point3D[] vertices) {
+    static Vector[] edgesOf(Point3D[] vertices) {
         int n = vertices.length;
         double longest = 0;
         for (int i = 0; i < n; ++i)

@@ -15,9 +15,6 @@ public class Triangle extends Polygon {
     /** Tolerance on the barycentric coordinates, so that neighbours sharing an edge leave no seam. */
     private static final double BARYCENTRIC_TOLERANCE = 1e-9;
 
-    /** The length of a triangle's data in {@link #intersect}'s array. */
-    static final int DATA_LENGTH = 10;
-
     /**
      * The data of the intersection test: the first vertex p1, the edges e1 = p2 − p1 and
      * e2 = p3 − p1, and the |determinant| below which the ray is taken as parallel to the triangle.
@@ -43,8 +40,23 @@ public class Triangle extends Polygon {
         double e2x = p3.getX() - p1x;
         double e2y = p3.getY() - p1y;
         double e2z = p3.getZ() - p1z;
-        double parallelLimit = 1e-12 * Math.sqrt((e1x * e1x + e1y * e1y + e1z * e1z) * (e2x * e2x + e2y * e2y + e2z * e2z));
-        data = new double[] { p1x, p1y, p1z, e1x, e1y, e1z, e2x, e2y, e2z, parallelLimit };
+        data = new double[] { p1x, p1y, p1z, e1x, e1y, e1z, e2x, e2y, e2z, parallelLimit(e1x, e1y, e1z, e2x, e2y, e2z) };
+    }
+
+    /**
+     * The |determinant| of the intersection test below which a ray is taken as parallel to a
+     * triangle: a tiny fraction of the product of its edges' lengths.
+     *
+     * @param e1x the first edge p2 − p1, x
+     * @param e1y the first edge, y
+     * @param e1z the first edge, z
+     * @param e2x the second edge p3 − p1, x
+     * @param e2y the second edge, y
+     * @param e2z the second edge, z
+     * @return the limit
+     */
+    static double parallelLimit(double e1x, double e1y, double e1z, double e2x, double e2y, double e2z) {
+        return 1e-12 * Math.sqrt((e1x * e1x + e1y * e1y + e1z * e1z) * (e2x * e2x + e2y * e2y + e2z * e2z));
     }
 
     @Override
@@ -53,19 +65,8 @@ public class Triangle extends Polygon {
     }
 
     /**
-     * Copies the data of the intersection test, so that a caller can keep many triangles in one array.
-     *
-     * @param target the array
-     * @param offset where the {@link #DATA_LENGTH} doubles go
-     */
-    void copyData(double[] target, int offset) {
-        System.arraycopy(data, 0, target, offset, DATA_LENGTH);
-    }
-
-    /**
      * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle whose data
-     * (see {@link #copyData}) lie in an array. It must stay under the JIT's size limit for inlining
-     * hot methods (325 bytes of bytecode), or every triangle test of the hierarchy becomes a call.
+     * (p1, e1, e2 and the parallel limit, see the constructor) lie in an array.
      *
      * @param data   the array
      * @param offset where the triangle's data start
@@ -74,22 +75,37 @@ public class Triangle extends Polygon {
      */
     static double intersect(double[] data, int offset, double ox, double oy, double oz, double dx, double dy,
                             double dz, double maxT) {
-        double e1x = data[offset + 3];
-        double e1y = data[offset + 4];
-        double e1z = data[offset + 5];
-        double e2x = data[offset + 6];
-        double e2y = data[offset + 7];
-        double e2z = data[offset + 8];
+        return intersect(data[offset], data[offset + 1], data[offset + 2], data[offset + 3], data[offset + 4],
+                data[offset + 5], data[offset + 6], data[offset + 7], data[offset + 8], data[offset + 9],
+                ox, oy, oz, dx, dy, dz, maxT);
+    }
+
+    /**
+     * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle given by its
+     * first vertex p1 and its edges e1 = p2 − p1 and e2 = p3 − p1: closed, its edges and vertices hit
+     * within a barycentric tolerance. Every triangle of the renderer's path, a {@link Triangle} or
+     * one of a {@link TriangleMesh}, is tested here. It must stay under the JIT's size limit for
+     * inlining hot methods (325 bytes of bytecode), or every triangle test of the hierarchy becomes a
+     * call.
+     *
+     * @param parallelLimit the |determinant| below which the ray is taken as parallel, see
+     *                      {@link #parallelLimit}
+     * @param maxT          the largest distance that counts
+     * @return the distance t in (0, maxT], or {@link #NO_HIT} when the ray misses
+     */
+    static double intersect(double p1x, double p1y, double p1z, double e1x, double e1y, double e1z, double e2x,
+                            double e2y, double e2z, double parallelLimit, double ox, double oy, double oz,
+                            double dx, double dy, double dz, double maxT) {
         double px = dy * e2z - dz * e2y;
         double py = dz * e2x - dx * e2z;
         double pz = dx * e2y - dy * e2x;
         double det = e1x * px + e1y * py + e1z * pz;
-        if (Math.abs(det) < data[offset + 9])
+        if (Math.abs(det) < parallelLimit)
             return NO_HIT;
         double inv = 1.0 / det;
-        double tx = ox - data[offset];
-        double ty = oy - data[offset + 1];
-        double tz = oz - data[offset + 2];
+        double tx = ox - p1x;
+        double ty = oy - p1y;
+        double tz = oz - p1z;
         double u = (tx * px + ty * py + tz * pz) * inv;
         if (u < -BARYCENTRIC_TOLERANCE || u > 1 + BARYCENTRIC_TOLERANCE)
             return NO_HIT;
@@ -108,17 +124,32 @@ public class Triangle extends Polygon {
      */
     @Override
     boolean bounds(double[] box, int b) {
+        bounds(vertexCoordinates, 0, 3, 6, box, b);
+        return true;
+    }
+
+    /**
+     * Writes the box around every point the renderer's test of a triangle accepts (see
+     * {@link #bounds(double[], int)}) into an array.
+     *
+     * @param vertices the vertices' coordinates, three doubles each
+     * @param p1       where the first vertex's x lies in vertices
+     * @param p2       where the second vertex's x lies
+     * @param p3       where the third vertex's x lies
+     * @param box      the array
+     * @param b        where the box's six numbers go: {minX, minY, minZ, maxX, maxY, maxZ}
+     */
+    static void bounds(double[] vertices, int p1, int p2, int p3, double[] box, int b) {
         for (int k = 0; k < 3; ++k) {
-            double a = vertexCoordinates[k];
-            double bk = vertexCoordinates[3 + k];
-            double c = vertexCoordinates[6 + k];
+            double a = vertices[p1 + k];
+            double bk = vertices[p2 + k];
+            double c = vertices[p3 + k];
             double ca = a + BARYCENTRIC_TOLERANCE * ((a - bk) + (a - c));
             double cb = bk + BARYCENTRIC_TOLERANCE * ((bk - a) + (bk - c));
             double cc = c + BARYCENTRIC_TOLERANCE * ((c - a) + (c - bk));
             box[b + k] = Math.min(Math.min(a, Math.min(bk, c)), Math.min(ca, Math.min(cb, cc)));
             box[b + 3 + k] = Math.max(Math.max(a, Math.max(bk, c)), Math.max(ca, Math.max(cb, cc)));
         }
-        return true;
     }
 
     @Override

@@ -97,7 +97,7 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     private Color calcColor(GeoPoint geoPoint, Ray ray, int level, double k) {
-        Vector n = geoPoint.geometry.getNormal(geoPoint.point);
+        Vector n = geoPoint.getNormal();
         Color color = geoPoint.geometry.getEmission().add(calcLocalEffects(geoPoint, ray.getDir(), n, k));
         return level == 1 ? color : color.add(calcGlobalEffects(geoPoint, ray.getDir(), n, level, k));
     }

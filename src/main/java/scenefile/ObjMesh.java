@@ -8,8 +8,7 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
+import java.util.Arrays;
 import java.util.NoSuchElementException;
 import java.util.regex.Pattern;
 
@@ -18,21 +17,24 @@ import de.javagl.obj.Obj;
 import de.javagl.obj.ObjFace;
 import de.javagl.obj.ObjReader;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import primitives.Point3D;
 
 import static primitives.Util.requireNonNull;
 import static primitives.Util.requirePositive;
 
 /**
- * Reads a triangle mesh from a Wavefront OBJ file (with the de.javagl:obj library).
+ * Reads a triangle mesh from a Wavefront OBJ file (with the de.javagl:obj library) into a flat
+ * {@link TriangleMesh}: the file's vertices once each, its triangles as indices into them.
  * <p>
  * Only the vertices ({@code v}) and the faces ({@code f}) count; texture coordinates, normals,
  * groups and materials are ignored. Face indices may be absolute (1-based) or relative (negative,
  * counted back from the last vertex read). The library reads coordinates as {@code float}s.
  * A face of more than three vertices is taken as a convex polygon and split into a fan of
  * triangles around its first vertex, which keeps the face's winding. A triangle that is degenerate
- * (coincident or collinear vertices, refused by {@link Triangle}) is skipped, and so is a face of
- * fewer than three vertices: real OBJ files contain such faces, and they have no area to render.
+ * (coincident or collinear vertices, refused by {@link Triangle} and {@link TriangleMesh}) is
+ * skipped, and so is a face of fewer than three vertices: real OBJ files contain such faces, and
+ * they have no area to render.
  */
 public final class ObjMesh {
     /** The longest line of an OBJ file, in characters: room for a face of tens of thousands of vertices. */
@@ -47,11 +49,11 @@ public final class ObjMesh {
      * Reads the triangles of an OBJ file as they are: scale 1, at the origin.
      *
      * @param file the OBJ file
-     * @return the triangles, in the order of the file's faces (a new list the caller owns)
+     * @return the mesh of the file's vertices and triangles, in the order of its faces
      * @throws IllegalArgumentException when the file is null, missing, unreadable or malformed, or
      *                                  has no triangle that is not degenerate
      */
-    public static List<Triangle> read(Path file) {
+    public static TriangleMesh read(Path file) {
         return read(file, 1, Point3D.ZERO);
     }
 
@@ -62,13 +64,13 @@ public final class ObjMesh {
      * @param file     the OBJ file
      * @param scale    the factor applied to every vertex, a finite positive number
      * @param position where the file's origin goes
-     * @return the triangles, in the order of the file's faces (a new list the caller owns)
+     * @return the mesh of the file's vertices (each placed) and triangles, in the order of its faces
      * @throws IllegalArgumentException when an argument is null, the scale is not a finite positive
      *                                  number, the file is missing, unreadable or malformed (for
      *                                  instance a bad number or a face index out of range), or it
      *                                  has no triangle that is not degenerate
      */
-    public static List<Triangle> read(Path file, double scale, Point3D position) {
+    public static TriangleMesh read(Path file, double scale, Point3D position) {
         requireNonNull(file, "OBJ file");
         requirePositive(scale, "scale of OBJ file " + file);
         requireNonNull(position, "position of OBJ file " + file);
@@ -76,20 +78,38 @@ public final class ObjMesh {
         Obj obj = parse(file);
         Point3D[] vertices = vertices(obj, file, scale, position);
         int faceCount = obj.getNumFaces();
-        List<Triangle> triangles = new ArrayList<>(faceCount + faceCount / 2);
+        int[] triangles = new int[3 * faceCount];
+        int length = 0;
         for (int f = 0; f < faceCount; ++f) {
             ObjFace face = obj.getFace(f);
-            int n = face.getNumVertices();
-            int[] indices = new int[n];
-            for (int k = 0; k < n; ++k)
-                indices[k] = face.getVertexIndex(k); // checked by FaceIndexChecker
-            for (int k = 1; k + 1 < n; ++k)
-                addTriangle(triangles, vertices[indices[0]], vertices[indices[k]], vertices[indices[k + 1]]);
+            int first = face.getVertexIndex(0); // checked by FaceIndexChecker
+            for (int k = 1; k + 1 < face.getNumVertices(); ++k) {
+                int second = face.getVertexIndex(k);
+                int third = face.getVertexIndex(k + 1);
+                if (TriangleMesh.isDegenerate(vertices[first], vertices[second], vertices[third]))
+                    continue; // skipped on purpose: see the class comment
+                if (length == triangles.length)
+                    triangles = Arrays.copyOf(triangles, 2 * length);
+                triangles[length++] = first;
+                triangles[length++] = second;
+                triangles[length++] = third;
+            }
         }
-        if (triangles.isEmpty())
+        if (length == 0)
             throw new IllegalArgumentException("OBJ file " + file + " has no triangles"
                     + (faceCount == 0 ? "" : " (all its " + faceCount + " faces are degenerate)"));
-        return triangles;
+        return new TriangleMesh(coordinates(vertices), Arrays.copyOf(triangles, length));
+    }
+
+    /** {@return the points' coordinates, three doubles each} */
+    private static double[] coordinates(Point3D[] points) {
+        double[] coordinates = new double[3 * points.length];
+        for (int i = 0; i < points.length; ++i) {
+            coordinates[3 * i] = points[i].getX();
+            coordinates[3 * i + 1] = points[i].getY();
+            coordinates[3 * i + 2] = points[i].getZ();
+        }
+        return coordinates;
     }
 
     /**
@@ -175,15 +195,6 @@ public final class ObjMesh {
             }
         }
         return vertices;
-    }
-
-    /** Adds the triangle unless it is degenerate (the constructor refuses coincident or collinear vertices). */
-    private static void addTriangle(List<Triangle> triangles, Point3D p1, Point3D p2, Point3D p3) {
-        try {
-            triangles.add(new Triangle(p1, p2, p3));
-        } catch (IllegalArgumentException degenerate) {
-            // skipped on purpose: see the class comment
-        }
     }
 
     /**

@@ -1,7 +1,6 @@
 package scenefile;
 
 import java.nio.file.Path;
-import java.util.List;
 import java.util.function.Supplier;
 
 import geometries.Cylinder;
@@ -12,6 +11,7 @@ import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import geometries.Tube;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
@@ -147,7 +147,7 @@ public final class SceneLoader {
     private static Intersectable body(SceneElement element, Path folder) {
         return switch (element.name()) {
             case "geometries" -> geometries(element, folder);
-            case "mesh" -> mesh(element, folder);
+            case "mesh" -> surface(mesh(element, folder), element);
             default -> surface(shape(element), element);
         };
     }
@@ -178,19 +178,17 @@ public final class SceneLoader {
         return vertices;
     }
 
-    private static Geometries mesh(SceneElement mesh, Path folder) {
-        List<Triangle> triangles = ObjMesh.read(folder.resolve(mesh.text("file")), mesh.number("scale"),
+    private static TriangleMesh mesh(SceneElement mesh, Path folder) {
+        TriangleMesh triangles = ObjMesh.read(folder.resolve(mesh.text("file")), mesh.number("scale"),
                 mesh.point("position"));
-        Geometries geometries = new Geometries();
         Point3D farthest = Point3D.ZERO;
-        for (Triangle triangle : triangles) {
-            for (Point3D vertex : triangle.getVertices())
-                if (vertex.distanceSquared(Point3D.ZERO) > farthest.distanceSquared(Point3D.ZERO))
-                    farthest = vertex;
-            geometries.add(surface(triangle, mesh));
+        for (int v = 0; v < triangles.getVerticesCount(); ++v) {
+            Point3D vertex = triangles.getVertex(v);
+            if (vertex.distanceSquared(Point3D.ZERO) > farthest.distanceSquared(Point3D.ZERO))
+                farthest = vertex;
         }
         mesh.bounded(farthest.distance(Point3D.ZERO), "the distance of vertex " + farthest + " from the origin");
-        return geometries;
+        return triangles;
     }
 
     /** Gives a body the emission and material of its element. */

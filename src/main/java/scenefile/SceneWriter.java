@@ -18,6 +18,7 @@ import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import geometries.Tube;
 import lighting.DirectionalLight;
 import lighting.LightSource;
@@ -190,10 +191,22 @@ public final class SceneWriter {
         xml.close("geometries");
     }
 
+    /** Writes a mesh as a group of its triangles, each with the mesh's surface (a scene file names no OBJ file for it). */
+    private static void mesh(Xml xml, TriangleMesh mesh) {
+        xml.start("geometries").open();
+        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
+            body(xml, mesh.getTriangle(t));
+        xml.close("geometries");
+    }
+
     private static void body(Xml xml, Intersectable body) {
         Class<?> type = requireNonNull(body, "a body").getClass();
         if (type == Geometries.class) {
             geometries(xml, (Geometries) body);
+            return;
+        }
+        if (type == TriangleMesh.class) {
+            mesh(xml, (TriangleMesh) body);
             return;
         }
         if (type == Sphere.class) {

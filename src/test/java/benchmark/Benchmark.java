@@ -6,11 +6,10 @@ import java.util.Arrays;
 import java.util.List;
 
 import geometries.BoundingVolumeHierarchy;
-import geometries.Geometries;
 import geometries.Geometry;
 import geometries.Plane;
 import geometries.Sphere;
-import geometries.Triangle;
+import geometries.TriangleMesh;
 import lighting.PointLight;
 import primitives.Color;
 import primitives.Material;
@@ -283,12 +282,10 @@ public final class Benchmark {
      */
     private static Scene terrain(String name, int triangles) {
         Scene scene = floorAndLight(name, LARGE_LIGHT_EDGE);
-        Geometries mesh = new Geometries();
-        for (Triangle triangle : Terrain.triangles(triangles))
-            mesh.add(triangle.setMaterial(DIFFUSE));
-        scene.geometries.add(mesh);
+        TriangleMesh mesh = Terrain.mesh(triangles);
+        scene.geometries.add(mesh.setMaterial(DIFFUSE));
         System.out.printf("%s: a terrain of %d x %d cells, %d triangles%n", name, Terrain.cellsAlongX(triangles),
-                Terrain.cellsAlongZ(triangles), mesh.getGeometries().size());
+                Terrain.cellsAlongZ(triangles), mesh.getTrianglesCount());
         return scene;
     }
 
@@ -322,12 +319,9 @@ public final class Benchmark {
         int triangles = 0;
         for (int s = 0; s < centers.length; ++s) {
             if (meshes) {
-                Geometries mesh = new Geometries();
-                for (Triangle triangle : SphereMesh.triangles(centers[s], radii[s], MESH_RINGS, MESH_SEGMENTS)) {
-                    mesh.add(triangle.setMaterial(DIFFUSE));
-                    ++triangles;
-                }
-                scene.geometries.add(mesh);
+                TriangleMesh mesh = SphereMesh.mesh(centers[s], radii[s], MESH_RINGS, MESH_SEGMENTS);
+                scene.geometries.add(mesh.setMaterial(DIFFUSE));
+                triangles += mesh.getTrianglesCount();
             } else
                 scene.geometries.add(new Sphere(centers[s], radii[s]).setMaterial(DIFFUSE));
         }

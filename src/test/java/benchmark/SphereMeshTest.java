@@ -8,10 +8,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
 
 import java.util.HashMap;
-import java.util.IdentityHashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
+import java.util.Set;
 
 import org.junit.jupiter.api.Test;
 
@@ -19,6 +20,7 @@ import geometries.BoundingVolumeHierarchy;
 import geometries.Geometries;
 import geometries.Intersectable.GeoPoint;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
@@ -122,23 +124,22 @@ class SphereMeshTest {
     }
 
     /**
-     * Numbers the distinct vertex objects of triangles and counts their directed edges, each edge from
+     * Collects the vertices a mesh's triangles use and counts their directed edges, each edge from
      * vertex {@code from} to vertex {@code to} (in the triangle's order) keyed {@code from << 32 | to}.
      *
-     * @param triangles the triangles
-     * @param index     filled with a number for each distinct vertex object
+     * @param mesh the mesh
+     * @param used filled with the index of every vertex a triangle uses
      * @return how often each directed edge appears
      */
-    private static Map<Long, Integer> directedEdges(List<Triangle> triangles, Map<Point3D, Integer> index) {
+    private static Map<Long, Integer> directedEdges(TriangleMesh mesh, Set<Integer> used) {
         Map<Long, Integer> directed = new HashMap<>();
-        for (Triangle t : triangles) {
-            List<Point3D> v = t.getVertices();
+        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
             for (int e = 0; e < 3; ++e) {
-                long from = index.computeIfAbsent(v.get(e), p -> index.size());
-                long to = index.computeIfAbsent(v.get((e + 1) % 3), p -> index.size());
+                long from = mesh.getVertexIndex(t, e);
+                long to = mesh.getVertexIndex(t, (e + 1) % 3);
+                used.add((int) from);
                 directed.merge(from << 32 | to, 1, Integer::sum);
             }
-        }
         return directed;
     }
 
@@ -150,10 +151,15 @@ class SphereMeshTest {
     void testClosed() {
         // ===== Equivalence Partitions Tests =====
         // TC01: every directed edge appears once and its reverse once, so 3·1472/2 = 2208 edges in all
-        Map<Point3D, Integer> index = new IdentityHashMap<>();
-        Map<Long, Integer> directed = directedEdges(mesh, index);
-        // vertices are shared objects: 2 poles + 23 rings of 32 = 738 distinct ones (Euler: V - E + F = 2)
-        assertEquals(738, index.size(), "TC01: wrong number of distinct vertex objects");
+        Set<Integer> index = new HashSet<>();
+        TriangleMesh flat = SphereMesh.mesh(CENTER, RADIUS, RINGS, SEGMENTS);
+        Map<Long, Integer> directed = directedEdges(flat, index);
+        // vertices are shared: 2 poles + 23 rings of 32 = 738, every one used (Euler: V - E + F = 2)
+        assertEquals(738, flat.getVerticesCount(), "TC01: wrong number of vertices");
+        assertEquals(738, index.size(), "TC01: every vertex must be used");
+        for (int t = 0; t < flat.getTrianglesCount(); ++t)
+            assertEquals(flat.getTriangle(t).getVertices(), mesh.get(t).getVertices(),
+                    "TC01: triangles() must give the mesh's triangles, in order");
         for (Map.Entry<Long, Integer> edge : directed.entrySet()) {
             long key = edge.getKey();
             long reverse = (key & 0xFFFFFFFFL) << 32 | key >>> 32;
@@ -165,8 +171,8 @@ class SphereMeshTest {
 
         // ===== Boundary Values Tests =====
         // TC11: the smallest mesh (2 rings × 3 segments: a triangular bipyramid) has 5 vertices and 9 edges
-        Map<Point3D, Integer> smallIndex = new IdentityHashMap<>();
-        Map<Long, Integer> smallEdges = directedEdges(SphereMesh.triangles(CENTER, RADIUS, 2, 3), smallIndex);
+        Set<Integer> smallIndex = new HashSet<>();
+        Map<Long, Integer> smallEdges = directedEdges(SphereMesh.mesh(CENTER, RADIUS, 2, 3), smallIndex);
         assertEquals(5, smallIndex.size(), "TC11: wrong number of vertices");
         assertEquals(18, smallEdges.size(), "TC11: wrong number of directed edges");
         for (long key : smallEdges.keySet())

@@ -4,13 +4,15 @@ import java.util.ArrayList;
 import java.util.List;
 
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import primitives.Point3D;
 
 /**
  * The benchmark's bumpy terrain (SPEC §8, scenes G&lt;n&gt;): the heightfield
  * {@code y = −45.5 + 2.5·sin(0.3x)·cos(0.25z) + 1.5·sin(0.11x + 0.7)·sin(0.13z)} over
  * x ∈ [−200, 200], z ∈ [−1500, 340], cut into a grid of cells about as long as they are wide, each
- * cell split into two triangles along its diagonal. Neighbouring triangles share their vertex objects.
+ * cell split into two triangles along its diagonal, stored as a flat {@link TriangleMesh} (neighbouring
+ * triangles share their vertices).
  */
 public final class Terrain {
     /** The terrain's extent along x. */
@@ -57,38 +59,55 @@ public final class Terrain {
     }
 
     /**
-     * Tessellates the terrain into about a number of triangles:
-     * 2 · {@link #cellsAlongX} · {@link #cellsAlongZ} of them.
+     * Tessellates the terrain into about a number of triangles, as triangle objects: the triangles of
+     * {@link #mesh}, in its order.
      *
      * @param triangles the number of triangles wanted, 2 or more
      * @return the triangles, row by row along z
      * @throws IllegalArgumentException when fewer than 2 triangles are wanted
      */
     public static List<Triangle> triangles(int triangles) {
-        int nx = cellsAlongX(triangles);
-        int nz = cellsAlongZ(triangles);
-        Point3D[] previous = row(nx, nz, 0);
-        List<Triangle> result = new ArrayList<>(2 * nx * nz);
-        for (int k = 1; k <= nz; ++k) {
-            Point3D[] current = row(nx, nz, k);
-            for (int i = 0; i < nx; ++i) {
-                result.add(new Triangle(previous[i], previous[i + 1], current[i + 1]));
-                result.add(new Triangle(previous[i], current[i + 1], current[i]));
-            }
-            previous = current;
-        }
+        TriangleMesh mesh = mesh(triangles);
+        List<Triangle> result = new ArrayList<>(mesh.getTrianglesCount());
+        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
+            result.add(mesh.getTriangle(t));
         return result;
     }
 
-    /** The nx + 1 vertices of row k of the grid (z = MIN_Z + k · cell length). */
-    private static Point3D[] row(int nx, int nz, int k) {
-        double z = MIN_Z + (MAX_Z - MIN_Z) * k / nz;
-        Point3D[] row = new Point3D[nx + 1];
-        for (int i = 0; i <= nx; ++i) {
-            double x = MIN_X + (MAX_X - MIN_X) * i / nx;
-            row[i] = new Point3D(x, height(x, z), z);
+    /**
+     * Tessellates the terrain into a flat mesh of about a number of triangles:
+     * 2 · {@link #cellsAlongX} · {@link #cellsAlongZ} of them. Vertex i of row k (x = MIN_X + i · cell
+     * width, z = MIN_Z + k · cell length) is vertex k · (nx + 1) + i; the cells go row by row along z,
+     * each as two triangles.
+     *
+     * @param triangles the number of triangles wanted, 2 or more
+     * @return the mesh
+     * @throws IllegalArgumentException when fewer than 2 triangles are wanted
+     */
+    public static TriangleMesh mesh(int triangles) {
+        int nx = cellsAlongX(triangles);
+        int nz = cellsAlongZ(triangles);
+        double[] vertices = new double[3 * (nx + 1) * (nz + 1)];
+        for (int k = 0; k <= nz; ++k) {
+            double z = MIN_Z + (MAX_Z - MIN_Z) * k / nz;
+            for (int i = 0; i <= nx; ++i) {
+                double x = MIN_X + (MAX_X - MIN_X) * i / nx;
+                int v = 3 * (k * (nx + 1) + i);
+                vertices[v] = x;
+                vertices[v + 1] = height(x, z);
+                vertices[v + 2] = z;
+            }
         }
-        return row;
+        int[] indices = new int[6 * nx * nz];
+        int t = 0;
+        for (int k = 1; k <= nz; ++k)
+            for (int i = 0; i < nx; ++i) {
+                int previous = (k - 1) * (nx + 1) + i;
+                int current = k * (nx + 1) + i;
+                t = SphereMesh.setTriangle(indices, t, previous, previous + 1, current + 1);
+                t = SphereMesh.setTriangle(indices, t, previous, current + 1, current);
+            }
+        return new TriangleMesh(vertices, indices);
     }
 
     private static void requireTriangles(int triangles) {

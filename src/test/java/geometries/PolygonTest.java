@@ -353,7 +353,7 @@ class PolygonTest {
      * @param thickness the thickness
      * @return the frustum
      */
-    private static ShadowFrustum pyramid(Point3D apex, double cz, double thickness) {
+    static ShadowFrustum pyramid(Point3D apex, double cz, double thickness) {
         ShadowFrustum frustum = new ShadowFrustum();
         assertTrue(frustum.set(apex.getX(), apex.getY(), apex.getZ(), 0, 0, cz, 1, 0, 0, 0, 1, 0, thickness),
                 "the pyramid must be set");

@@ -25,6 +25,7 @@ import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import geometries.Tube;
 import lighting.DirectionalLight;
 import lighting.PointLight;
@@ -292,13 +293,16 @@ class SceneLoaderTest {
         // TC07: a nested <geometries> is a nested composite
         Geometries group = assertInstanceOf(Geometries.class, bodies.get(6), "TC07: then a group");
         assertEquals(1, group.getGeometries().size(), "TC07: one sphere in the group");
-        // TC08: the OBJ cube is 12 triangles, scaled by 10 around (100, 0, 0), each with the mesh's surface
-        Geometries mesh = assertInstanceOf(Geometries.class, bodies.get(7), "TC08: then the mesh");
-        assertEquals(12, mesh.getGeometries().size(), "TC08: a cube is 12 triangles");
-        for (Intersectable body : mesh.getGeometries()) {
-            Triangle face = assertInstanceOf(Triangle.class, body, "TC08: a mesh is triangles");
-            assertColor(20, 20, 20, face.getEmission(), "TC08: wrong mesh emission");
-            assertEquals(1, face.getMaterial().getKr(), 1e-15, "TC08: wrong mesh kR");
+        // TC08: the OBJ cube is a mesh of 12 triangles over its 8 corners, scaled by 10 around (100, 0, 0),
+        // with the mesh element's surface
+        TriangleMesh mesh = assertInstanceOf(TriangleMesh.class, bodies.get(7), "TC08: then the mesh");
+        assertEquals(12, mesh.getTrianglesCount(), "TC08: a cube is 12 triangles");
+        assertEquals(8, mesh.getVerticesCount(), "TC08: a cube has 8 corners");
+        assertColor(20, 20, 20, mesh.getEmission(), "TC08: wrong mesh emission");
+        assertEquals(1, mesh.getMaterial().getKr(), 1e-15, "TC08: wrong mesh kR");
+        for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
+            Triangle face = mesh.getTriangle(t);
+            assertColor(20, 20, 20, face.getEmission(), "TC08: wrong emission of a face");
             for (Point3D p : face.getVertices()) {
                 assertEquals(10, Math.abs(p.getX() - 100), 1e-12, "TC08: cube corner x must be 100 ± 10");
                 assertEquals(10, Math.abs(p.getY()), 1e-12, "TC08: cube corner y must be ± 10");
@@ -506,6 +510,6 @@ class SceneLoaderTest {
         // TC02: the OBJ example: a plane, two cubes of 12 triangles each and a sphere
         List<Intersectable> bodies = bodies(SceneLoader.load(Path.of("scenes", "cubesOnFloor.xml")));
         assertEquals(4, bodies.size(), "TC02: wrong number of bodies");
-        assertEquals(12, ((Geometries) bodies.get(1)).getGeometries().size(), "TC02: a cube is 12 triangles");
+        assertEquals(12, ((TriangleMesh) bodies.get(1)).getTrianglesCount(), "TC02: a cube is 12 triangles");
     }
 }

@@ -24,6 +24,7 @@ import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import geometries.Tube;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
@@ -418,6 +419,43 @@ class SceneWriterTest {
         // TC12: the defaults (no aperture, the view plane in focus, 9 rays, not adaptive) write nothing
         assertFalse(SceneWriter.toXml(everything()).contains("aperture"), "TC12: a pinhole camera writes no lens");
         assertFalse(SceneWriter.toXml(everything()).contains("adaptive-super"), "TC12: adaptive off writes nothing");
+    }
+
+    /**
+     * Test method for {@link SceneWriter#toXml(Picture)} on a {@link TriangleMesh}: a scene file names no
+     * OBJ file for it, so it is written as a group of its triangles, each with the mesh's surface, and
+     * loaded back it renders the same pixels.
+     */
+    @Test
+    void testMesh() {
+        Scene scene = new Scene("mesh").setAmbientLight(new AmbientLight(new Color(255, 255, 255), 0.1));
+        scene.geometries.add(new TriangleMesh(new double[] { -50, -50, -100, 50, -50, -100, 50, 50, -100, -50, 50, -120 },
+                new int[] { 0, 1, 2, 0, 2, 3 }).setEmission(new Color(40, 0, 0)).setMaterial(new Material().setKd(0.5)));
+        scene.lights.add(new DirectionalLight(new Color(200, 200, 200), new Vector(0, 0, -1)));
+        Picture picture = new Picture("mesh", 20, 20, scene,
+                new Camera(new Point3D(0, 0, 500), new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(150, 150)
+                        .setVpDistance(500));
+        String xml = SceneWriter.toXml(picture);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the mesh is a group of its two triangles, in its order, each with its emission and kD
+        assertTrue(xml.contains("""
+                    <geometries>
+                        <geometries>
+                            <triangle p0="-50 -50 -100" p1="50 -50 -100" p2="50 50 -100" emission="40 0 0" kD="0.5"/>
+                            <triangle p0="-50 -50 -100" p1="50 50 -100" p2="-50 50 -120" emission="40 0 0" kD="0.5"/>
+                        </geometries>
+                    </geometries>
+                """), "TC01: wrong mesh:\n" + xml);
+        // TC02: loaded back, the triangles render the mesh's pixels
+        Path file = FOLDER.resolve("mesh.xml");
+        SceneWriter.write(picture, file);
+        ImageWriter java = render(picture, "mesh-java");
+        ImageWriter fromFile = render(SceneLoader.load(file), "mesh-file");
+        assertEquals(0, differentPixels(java, fromFile), "TC02: the loaded mesh renders other pixels");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the pixel in the middle shows the mesh: its emission and its diffuse light, red 40 + 0.5·200 + 25.5
+        assertEquals(166, java.getPixel(10, 10).getRed(), 1, "TC11: the middle pixel must show the mesh");
     }
 
     /**

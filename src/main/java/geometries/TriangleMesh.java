@@ -1,0 +1,468 @@
+package geometries;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+import static primitives.Util.requireNonNull;
+
+/**
+ * A triangle mesh stored flat: every vertex once, as three doubles in one array, and every triangle
+ * as the indices of its three vertices in another, so that neighbouring triangles share their
+ * vertices and no object exists per triangle. This is how large meshes (an imported OBJ model, a
+ * terrain) fit in memory: about 24 bytes per triangle for a closed mesh or a grid, against several
+ * hundred for a {@link Triangle} object each. The whole mesh has one emission and one material.
+ * <p>
+ * Each triangle is the {@link Triangle} of its three vertices, in order, and behaves exactly like
+ * it: the course's queries ({@link #findIntersections}, {@link #findGeoIntersections}) take every
+ * triangle as open (a ray through an edge, a vertex or an edge's continuation misses it), the
+ * renderer's path takes it as closed, so the mesh is watertight, and its normal is the
+ * {@link Triangle}'s: (p2 − p1) × (p3 − p2), normalised. The {@link BoundingVolumeHierarchy} holds
+ * a mesh's triangles as its own bodies, by index. A hit on a mesh is a {@link MeshPoint}, which
+ * knows its triangle, so {@link GeoPoint#getNormal()} gives that triangle's normal.
+ */
+public final class TriangleMesh extends Geometry {
+    /** The tolerance, relative to a triangle's longest edge, of a point on it (see {@link #getNormal(Point3D)}). */
+    private static final double ON_TRIANGLE_TOLERANCE = 1e-9;
+
+    /** The vertices' coordinates, three doubles per vertex. */
+    private final double[] vertices;
+    /** The triangles' vertices, three indices per triangle. */
+    private final int[] indices;
+    /** Per triangle, the |determinant| below which a ray is taken as parallel to it. */
+    private final double[] parallelLimits;
+    /** The box around every point the renderer's test of a triangle accepts. */
+    private final double[] box = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+            Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+
+    /**
+     * A hit on a mesh: the point, the mesh and the triangle of the mesh the point lies on.
+     */
+    public static final class MeshPoint extends GeoPoint {
+        /** The index of the triangle hit, in the mesh's order. */
+        public final int triangle;
+
+        /**
+         * Pairs a mesh and one of its triangles with a point on it.
+         *
+         * @param mesh     the mesh
+         * @param triangle the triangle's index
+         * @param point    the point on it
+         */
+        MeshPoint(TriangleMesh mesh, int triangle, Point3D point) {
+            super(mesh, point);
+            this.triangle = triangle;
+        }
+
+        /** {@return the unit normal of the triangle hit} */
+        @Override
+        public Vector getNormal() {
+            return ((TriangleMesh) geometry).getNormal(triangle);
+        }
+
+        @Override
+        public String toString() {
+            return "MeshPoint{triangle " + triangle + " of " + geometry + " at " + point + "}";
+        }
+    }
+
+    /**
+     * Creates a mesh from its vertices and triangles. The arrays are copied.
+     *
+     * @param vertices the vertices' coordinates, x, y and z of each vertex in turn
+     * @param indices  the triangles, the indices (from 0) of the three vertices of each in turn
+     * @throws IllegalArgumentException when an array is null, its length is not a multiple of 3, there
+     *                                  is no triangle, a coordinate is not a finite number, an index
+     *                                  names no vertex, or a triangle is degenerate (its vertices
+     *                                  coincide or are collinear, as {@link Triangle} refuses them);
+     *                                  the message names the vertex or the triangle
+     */
+    public TriangleMesh(double[] vertices, int[] indices) {
+        requireNonNull(vertices, "mesh vertices");
+        requireNonNull(indices, "mesh triangles");
+        if (vertices.length % 3 != 0)
+            throw new IllegalArgumentException("mesh vertices need three coordinates each, got " + vertices.length
+                    + " numbers");
+        if (indices.length == 0 || indices.length % 3 != 0)
+            throw new IllegalArgumentException("mesh triangles need three vertex indices each (one triangle or"
+                    + " more), got " + indices.length + " indices");
+        this.vertices = vertices.clone();
+        this.indices = indices.clone();
+        for (int i = 0; i < this.vertices.length; ++i)
+            if (!Double.isFinite(this.vertices[i]))
+                throw new IllegalArgumentException("mesh vertex " + i / 3 + " has a coordinate that is not a finite"
+                        + " number: " + this.vertices[i]);
+        int count = this.vertices.length / 3;
+        for (int i = 0; i < this.indices.length; ++i)
+            if (this.indices[i] < 0 || this.indices[i] >= count)
+                throw new IllegalArgumentException("mesh triangle " + i / 3 + " refers to vertex " + this.indices[i]
+                        + ", out of range [0, " + count + ")");
+        this.parallelLimits = new double[this.indices.length / 3];
+        double[] triangleBox = new double[6];
+        for (int t = 0; t < parallelLimits.length; ++t) {
+            requireNotDegenerate(t);
+            parallelLimits[t] = parallelLimit(t);
+            bounds(t, triangleBox, 0);
+            for (int k = 0; k < 3; ++k) {
+                box[k] = Math.min(box[k], triangleBox[k]);
+                box[3 + k] = Math.max(box[3 + k], triangleBox[3 + k]);
+            }
+        }
+    }
+
+    /**
+     * Whether three points make a degenerate triangle, one that {@link Triangle} and a mesh refuse:
+     * two of them coincide or all three are collinear (by the library's relative tolerances).
+     *
+     * @param p1 the first vertex
+     * @param p2 the second vertex
+     * @param p3 the third vertex
+     * @return true when no triangle can be made of them
+     * @throws IllegalArgumentException when a point is null
+     */
+    public static boolean isDegenerate(Point3D p1, Point3D p2, Point3D p3) {
+        Point3D[] vertices = { requireNonNull(p1, "vertex p1"), requireNonNull(p2, "vertex p2"),
+                requireNonNull(p3, "vertex p3") };
+        try {
+            Polygon.edgesOf(vertices);
+            return false;
+        } catch (IllegalArgumentException degenerate) {
+            return true;
+        }
+    }
+
+    /** Throws when triangle t is degenerate, naming it. */
+    private void requireNotDegenerate(int t) {
+        try {
+            Polygon.edgesOf(new Point3D[] { vertexOf(t, 0), vertexOf(t, 1), vertexOf(t, 2) });
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("mesh triangle " + t + " (vertices " + indices[3 * t] + ", "
+                    + indices[3 * t + 1] + ", " + indices[3 * t + 2] + ") is degenerate: " + e.getMessage(), e);
+        }
+    }
+
+    /** {@return triangle t's parallel limit, the {@link Triangle}'s} */
+    private double parallelLimit(int t) {
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
+        return Triangle.parallelLimit(vertices[b] - vertices[a], vertices[b + 1] - vertices[a + 1],
+                vertices[b + 2] - vertices[a + 2], vertices[c] - vertices[a], vertices[c + 1] - vertices[a + 1],
+                vertices[c + 2] - vertices[a + 2]);
+    }
+
+    /** {@return the number of vertices} */
+    public int getVerticesCount() {
+        return vertices.length / 3;
+    }
+
+    /** {@return the number of triangles} */
+    public int getTrianglesCount() {
+        return parallelLimits.length;
+    }
+
+    /**
+     * A vertex.
+     *
+     * @param v the vertex's index, from 0
+     * @return the vertex
+     * @throws IllegalArgumentException when there is no such vertex
+     */
+    public Point3D getVertex(int v) {
+        if (v < 0 || v >= getVerticesCount())
+            throw new IllegalArgumentException("mesh vertex " + v + " out of range [0, " + getVerticesCount() + ")");
+        return new Point3D(vertices[3 * v], vertices[3 * v + 1], vertices[3 * v + 2]);
+    }
+
+    /**
+     * A vertex of a triangle.
+     *
+     * @param t the triangle's index, from 0
+     * @param k which of its vertices: 0, 1 or 2
+     * @return the index of that vertex in the mesh
+     * @throws IllegalArgumentException when there is no such triangle or k is not 0, 1 or 2
+     */
+    public int getVertexIndex(int t, int k) {
+        requireTriangle(t);
+        if (k < 0 || k > 2)
+            throw new IllegalArgumentException("a triangle's vertex is 0, 1 or 2, got " + k);
+        return indices[3 * t + k];
+    }
+
+    /**
+     * A triangle of the mesh as a course-style {@link Triangle} object of the same vertices, with the
+     * mesh's emission and material (a new object at each call).
+     *
+     * @param t the triangle's index, from 0
+     * @return the triangle
+     * @throws IllegalArgumentException when there is no such triangle
+     */
+    public Triangle getTriangle(int t) {
+        requireTriangle(t);
+        Triangle triangle = new Triangle(vertexOf(t, 0), vertexOf(t, 1), vertexOf(t, 2));
+        triangle.setEmission(getEmission()).setMaterial(getMaterial());
+        return triangle;
+    }
+
+    /**
+     * The unit normal of a triangle: (p2 − p1) × (p3 − p2), normalised, the same vector as its
+     * {@link Triangle}'s.
+     *
+     * @param t the triangle's index, from 0
+     * @return the outward unit normal of the triangle (outward for vertices counter-clockwise seen
+     *         from outside)
+     * @throws IllegalArgumentException when there is no such triangle
+     */
+    public Vector getNormal(int t) {
+        requireTriangle(t);
+        Point3D p2 = vertexOf(t, 1);
+        // normalised twice, as a Triangle's edges' product is and then the plane's copy of it
+        return p2.subtract(vertexOf(t, 0)).crossProduct(vertexOf(t, 2).subtract(p2)).normalize().normalized();
+    }
+
+    /**
+     * The unit normal at a point of the mesh: that of the triangle the point lies on (of the nearest
+     * to it, on an edge two triangles share). Every triangle is searched; a renderer gets the normal
+     * from the hit, {@link MeshPoint#getNormal()}, instead.
+     *
+     * @param point a point on the mesh
+     * @return the normal of the triangle it lies on
+     * @throws IllegalArgumentException when the point is null or lies on no triangle of the mesh
+     */
+    @Override
+    public Vector getNormal(Point3D point) {
+        requireNonNull(point, "point");
+        int nearest = -1;
+        double nearestDistance = Double.POSITIVE_INFINITY;
+        for (int t = 0; t < getTrianglesCount(); ++t) {
+            double distance = distanceOnTriangle(t, point);
+            if (distance < nearestDistance) {
+                nearest = t;
+                nearestDistance = distance;
+            }
+        }
+        if (nearest < 0)
+            throw new IllegalArgumentException("point " + point + " lies on no triangle of the mesh");
+        return getNormal(nearest);
+    }
+
+    /**
+     * The distance of a point from a triangle's plane, when the point lies on the triangle: within the
+     * tolerance of its plane and its edges.
+     *
+     * @return the distance, or +∞ when the point is off the triangle
+     */
+    private double distanceOnTriangle(int t, Point3D point) {
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
+        double e1x = vertices[b] - vertices[a];
+        double e1y = vertices[b + 1] - vertices[a + 1];
+        double e1z = vertices[b + 2] - vertices[a + 2];
+        double e2x = vertices[c] - vertices[a];
+        double e2y = vertices[c + 1] - vertices[a + 1];
+        double e2z = vertices[c + 2] - vertices[a + 2];
+        double wx = point.getX() - vertices[a];
+        double wy = point.getY() - vertices[a + 1];
+        double wz = point.getZ() - vertices[a + 2];
+        double nx = e1y * e2z - e1z * e2y;
+        double ny = e1z * e2x - e1x * e2z;
+        double nz = e1x * e2y - e1y * e2x;
+        double distance = Math.abs(wx * nx + wy * ny + wz * nz) / Math.sqrt(nx * nx + ny * ny + nz * nz);
+        double d11 = e1x * e1x + e1y * e1y + e1z * e1z;
+        double d12 = e1x * e2x + e1y * e2y + e1z * e2z;
+        double d22 = e2x * e2x + e2y * e2y + e2z * e2z;
+        double w1 = wx * e1x + wy * e1y + wz * e1z;
+        double w2 = wx * e2x + wy * e2y + wz * e2z;
+        double denominator = d11 * d22 - d12 * d12;
+        double u = (d22 * w1 - d12 * w2) / denominator;
+        double v = (d11 * w2 - d12 * w1) / denominator;
+        double longest = Math.sqrt(Math.max(Math.max(d11, d22),
+                (e2x - e1x) * (e2x - e1x) + (e2y - e1y) * (e2y - e1y) + (e2z - e1z) * (e2z - e1z)));
+        boolean inside = u >= -ON_TRIANGLE_TOLERANCE && v >= -ON_TRIANGLE_TOLERANCE
+                && u + v <= 1 + ON_TRIANGLE_TOLERANCE;
+        return inside && distance <= ON_TRIANGLE_TOLERANCE * longest ? distance : Double.POSITIVE_INFINITY;
+    }
+
+    /** Throws when there is no triangle t. */
+    private void requireTriangle(int t) {
+        if (t < 0 || t >= getTrianglesCount())
+            throw new IllegalArgumentException("mesh triangle " + t + " out of range [0, " + getTrianglesCount() + ")");
+    }
+
+    /** {@return vertex k (0, 1 or 2) of triangle t} */
+    private Point3D vertexOf(int t, int k) {
+        return getVertex(indices[3 * t + k]);
+    }
+
+    /**
+     * The course's query: every triangle is open, as a {@link Triangle}'s own query takes it. Only the
+     * triangles whose boxes the ray meets are tested as {@link Triangle}s.
+     */
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        Point3D p0 = ray.getP0();
+        Vector dir = ray.getDir();
+        BoxTest boxTest = new BoxTest(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), maxDistance);
+        if (!boxTest.meets(box, 0))
+            return null;
+        List<GeoPoint> hits = new ArrayList<>();
+        double[] triangleBox = new double[6];
+        for (int t = 0; t < getTrianglesCount(); ++t) {
+            bounds(t, triangleBox, 0);
+            if (boxTest.meets(triangleBox, 0)) {
+                List<GeoPoint> found = getTriangle(t).findGeoIntersectionsHelper(ray, maxDistance);
+                if (found != null)
+                    hits.add(new MeshPoint(this, t, found.get(0).point));
+            }
+        }
+        if (hits.isEmpty())
+            return null;
+        hits.sort(Comparator.comparingDouble(hit -> hit.point.distanceSquared(p0)));
+        return hits;
+    }
+
+    /**
+     * The slab test of a ray against boxes, for the course's query: whether the ray meets a box between
+     * its start and a distance.
+     */
+    private static final class BoxTest {
+        private final double[] origin;
+        private final double[] inverse;
+        private final double maxT;
+
+        BoxTest(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+            this.origin = new double[] { ox, oy, oz };
+            this.inverse = new double[] { 1 / dx, 1 / dy, 1 / dz };
+            this.maxT = maxT;
+        }
+
+        /** Whether the ray meets the box at b; a slab whose test gives NaN (a ray in its face) does not restrict. */
+        boolean meets(double[] boxes, int b) {
+            double near = 0;
+            double far = maxT;
+            for (int k = 0; k < 3; ++k) {
+                double t1 = (boxes[b + k] - origin[k]) * inverse[k];
+                double t2 = (boxes[b + 3 + k] - origin[k]) * inverse[k];
+                double low = Math.min(t1, t2);
+                double high = Math.max(t1, t2);
+                near = low > near ? low : near;
+                far = high < far ? high : far;
+            }
+            return near <= far;
+        }
+    }
+
+    /** The renderer's path for the whole mesh (outside a hierarchy): the nearest closed triangle hit. */
+    @Override
+    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        double nearest = NO_HIT;
+        for (int t = 0; t < getTrianglesCount(); ++t)
+            nearest = Math.min(nearest, triangleHit(t, ox, oy, oz, dx, dy, dz, maxT));
+        return nearest;
+    }
+
+    @Override
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        int count = 0;
+        for (int t = 0; t < getTrianglesCount(); ++t)
+            if (triangleHit(t, ox, oy, oz, dx, dy, dz, maxT) < NO_HIT)
+                ++count;
+        return count;
+    }
+
+    /**
+     * The renderer's test of one triangle: closed, the test of its {@link Triangle}
+     * ({@link Triangle#intersect}) on the same numbers.
+     *
+     * @param t    the triangle's index
+     * @param maxT the largest distance that counts
+     * @return the distance in (0, maxT], or {@link #NO_HIT}
+     */
+    double triangleHit(int t, double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
+        double p1x = vertices[a];
+        double p1y = vertices[a + 1];
+        double p1z = vertices[a + 2];
+        return Triangle.intersect(p1x, p1y, p1z, vertices[b] - p1x, vertices[b + 1] - p1y, vertices[b + 2] - p1z,
+                vertices[c] - p1x, vertices[c + 1] - p1y, vertices[c + 2] - p1z, parallelLimits[t],
+                ox, oy, oz, dx, dy, dz, maxT);
+    }
+
+    /**
+     * Writes the box of one triangle, the box of its {@link Triangle}, into an array.
+     *
+     * @param t      the triangle's index
+     * @param target the array
+     * @param b      where the box's six numbers go
+     */
+    void bounds(int t, double[] target, int b) {
+        Triangle.bounds(vertices, corner(t, 0), corner(t, 1), corner(t, 2), target, b);
+    }
+
+    /**
+     * Whether triangle t may meet any ray of a shadow bundle: a triangle lies in its plane, so only
+     * when the plane does (as {@link Polygon}'s test). Reads the mesh's arrays, allocates nothing.
+     *
+     * @param t       the triangle's index
+     * @param frustum the pyramid the bundle sweeps
+     * @return false only when no ray of the bundle can meet the triangle
+     */
+    boolean mayMeet(int t, ShadowFrustum frustum) {
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
+        double ux = vertices[b] - vertices[a];
+        double uy = vertices[b + 1] - vertices[a + 1];
+        double uz = vertices[b + 2] - vertices[a + 2];
+        double vx = vertices[c] - vertices[b];
+        double vy = vertices[c + 1] - vertices[b + 1];
+        double vz = vertices[c + 2] - vertices[b + 2];
+        double nx = uy * vz - uz * vy;
+        double ny = uz * vx - ux * vz;
+        double nz = ux * vy - uy * vx;
+        double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        return frustum.meetsPlane(nx / length, ny / length, nz / length, vertices[a], vertices[a + 1],
+                vertices[a + 2]);
+    }
+
+    /** {@return where vertex k (0, 1 or 2) of triangle t lies in the vertices' array: the place of its x} */
+    private int corner(int t, int k) {
+        return 3 * indices[3 * t + k];
+    }
+
+    @Override
+    boolean bounds(double[] target, int b) {
+        System.arraycopy(box, 0, target, b, 6);
+        return true;
+    }
+
+    /**
+     * The hit at a distance along a ray: on a given triangle, or when the hit was found on the whole
+     * mesh ({@link #nearestHit(double, double, double, double, double, double, double)}), on the first
+     * triangle the ray hits at that distance.
+     */
+    @Override
+    GeoPoint hitPoint(Ray ray, double t, int part) {
+        int triangle = part;
+        if (triangle < 0) {
+            Point3D p0 = ray.getP0();
+            Vector dir = ray.getDir();
+            triangle = 0;
+            while (triangleHit(triangle, p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), t) != t)
+                ++triangle;
+        }
+        return new MeshPoint(this, triangle, ray.getPoint(t));
+    }
+
+    @Override
+    public String toString() {
+        return "TriangleMesh{" + getVerticesCount() + " vertices, " + getTrianglesCount() + " triangles}";
+    }
+}
