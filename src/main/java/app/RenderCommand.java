@@ -26,7 +26,6 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import primitives.Util;
 import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.JitteredGrid;
@@ -342,9 +341,9 @@ public class RenderCommand implements Callable<Integer> {
         if (apertureRays != null)
             requireGrid("--aperture-rays", apertureRays);
         if (aperture != null)
-            requireValid(() -> Util.requireNonNegative(aperture, "--aperture"));
+            requireValid(() -> Camera.requireApertureSize(aperture, "--aperture"));
         if (focus != null)
-            requireValid(() -> Util.requirePositive(focus, "--focus"));
+            requireValid(() -> Camera.requireFocalDistance(focus, "--focus"));
         if (threads < 0 || threads > MAX_THREADS)
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--threads must be 0 (one per core) to " + MAX_THREADS + ", got " + threads);

@@ -619,7 +619,9 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * {@link #gatheredTransmittance} for every ray of the query's packet at once (read the answers
-     * with {@link Query#getTransmittance}), each the same as that ray's alone. When the last
+     * with {@link Query#getTransmittance}), each the same as that ray's alone up to the order in which
+     * the {@code kT} of several transparent bodies multiply (the packet enters the nearer child by its
+     * first ray's direction, which may move the last bit; opaque blockers give exactly 0). When the last
      * {@link #gather} kept a subtree, the rays walk it together as a packet: each node is visited
      * once for all of them, set aside when it does not meet the bundle's pyramid, and entered when
      * one of the rays still unblocked meets its box; a leaf's bodies are tested on every such ray

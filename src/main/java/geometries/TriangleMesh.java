@@ -209,6 +209,19 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
+     * The mesh's triangles as course-style {@link Triangle} objects, in its order, each with the mesh's
+     * emission and material: for code written against lists of triangles (new objects at each call).
+     *
+     * @return the triangles
+     */
+    public List<Triangle> getTriangles() {
+        List<Triangle> triangles = new ArrayList<>(getTrianglesCount());
+        for (int t = 0; t < getTrianglesCount(); ++t)
+            triangles.add(getTriangle(t));
+        return triangles;
+    }
+
+    /**
      * The unit normal of a triangle: (p2 − p1) × (p3 − p2), normalised, the same vector as its
      * {@link Triangle}'s.
      *

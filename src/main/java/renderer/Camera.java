@@ -26,6 +26,11 @@ import static primitives.Util.requirePositive;
 public class Camera {
     /** The default square root of the number of rays through the aperture: 9 × 9 = 81, as for shadow rays. */
     public static final int DEFAULT_SQRT_APERTURE_RAYS = 9;
+    /**
+     * The largest aperture size and focal distance, 1e100 (as for the numbers of a scene file): the rays'
+     * starting points and directions then stay far from overflowing.
+     */
+    public static final double MAX_LENS_SIZE = 1e100;
 
     private final Point3D p0;
     private final Vector vTo;
@@ -111,12 +116,13 @@ public class Camera {
     /**
      * Sets the distance from the camera to the plane in focus, along {@code vTo} (depth of field).
      *
-     * @param focalDistance the distance, positive; until set, the view plane's distance
+     * @param focalDistance the distance, positive, at most {@link #MAX_LENS_SIZE}; until set, the view
+     *                      plane's distance
      * @return this camera
-     * @throws IllegalArgumentException when the distance is not positive or not finite
+     * @throws IllegalArgumentException when the distance is not positive, not finite or too large
      */
     public Camera setFocalDistance(double focalDistance) {
-        this.focalDistance = requirePositive(focalDistance, "focal distance");
+        this.focalDistance = requireFocalDistance(focalDistance, "focal distance");
         return this;
     }
 
@@ -124,13 +130,44 @@ public class Camera {
      * Sets the edge of the camera's square aperture (depth of field): the wider, the more what lies off
      * the focal plane blurs.
      *
-     * @param apertureSize the edge, 0 (the default: a pinhole camera, everything sharp) or more
+     * @param apertureSize the edge, 0 (the default: a pinhole camera, everything sharp) to
+     *                     {@link #MAX_LENS_SIZE}
      * @return this camera
-     * @throws IllegalArgumentException when the size is negative or not finite
+     * @throws IllegalArgumentException when the size is negative, not finite or too large
      */
     public Camera setApertureSize(double apertureSize) {
-        this.apertureSize = requireNonNegative(apertureSize, "aperture size");
+        this.apertureSize = requireApertureSize(apertureSize, "aperture size");
         return this;
+    }
+
+    /**
+     * Checks a focal distance.
+     *
+     * @param focalDistance the distance
+     * @param what          what it is, for the message
+     * @return the distance
+     * @throws IllegalArgumentException when it is not positive, not finite or more than {@link #MAX_LENS_SIZE}
+     */
+    public static double requireFocalDistance(double focalDistance, String what) {
+        return requireLensSize(requirePositive(focalDistance, what), what);
+    }
+
+    /**
+     * Checks an aperture size.
+     *
+     * @param apertureSize the size
+     * @param what         what it is, for the message
+     * @return the size
+     * @throws IllegalArgumentException when it is negative, not finite or more than {@link #MAX_LENS_SIZE}
+     */
+    public static double requireApertureSize(double apertureSize, String what) {
+        return requireLensSize(requireNonNegative(apertureSize, what), what);
+    }
+
+    private static double requireLensSize(double size, String what) {
+        if (size > MAX_LENS_SIZE)
+            throw new IllegalArgumentException(what + " must be at most " + MAX_LENS_SIZE + ", got " + size);
+        return size;
     }
 
     /**

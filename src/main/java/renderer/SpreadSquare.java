@@ -59,27 +59,11 @@ final class SpreadSquare {
         ny = n.getY();
         nz = n.getZ();
         side = Math.signum(alignZero(rx * nx + ry * ny + rz * nz));
-        // a = r × e for the axis e least along r, scaled to the half-edge; b = r × a, as long
-        double cx;
-        double cy;
-        double cz;
-        if (Math.abs(rx) <= Math.abs(ry) && Math.abs(rx) <= Math.abs(rz)) {
-            cx = 0;
-            cy = rz;
-            cz = -ry;
-        } else if (Math.abs(ry) <= Math.abs(rz)) {
-            cx = -rz;
-            cy = 0;
-            cz = rx;
-        } else {
-            cx = ry;
-            cy = -rx;
-            cz = 0;
-        }
-        double scale = halfEdge / Math.sqrt(cx * cx + cy * cy + cz * cz);
-        ax = cx * scale;
-        ay = cy * scale;
-        az = cz * scale;
+        // a: a unit vector orthogonal to r, scaled to the half-edge; b = r × a, as long
+        Vector a = r.orthogonal();
+        ax = a.getX() * halfEdge;
+        ay = a.getY() * halfEdge;
+        az = a.getZ() * halfEdge;
         bx = ry * az - rz * ay;
         by = rz * ax - rx * az;
         bz = rx * ay - ry * ax;

@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.NoSuchElementException;
 import java.util.regex.Pattern;
 
@@ -46,6 +47,33 @@ public final class ObjMesh {
     }
 
     /**
+     * Reads the triangles of an OBJ file as they are (scale 1, at the origin), as {@link Triangle}
+     * objects: the form this method has always had. A large mesh is lighter as {@link #readMesh(Path)}.
+     *
+     * @param file the OBJ file
+     * @return the file's triangles, in the order of its faces
+     * @throws IllegalArgumentException when the file is null, missing, unreadable or malformed, or
+     *                                  has no triangle that is not degenerate
+     */
+    public static List<Triangle> read(Path file) {
+        return readMesh(file).getTriangles();
+    }
+
+    /**
+     * Reads the triangles of an OBJ file, scaled and moved, as {@link Triangle} objects: the form this
+     * method has always had. A large mesh is lighter as {@link #readMesh(Path, double, Point3D)}.
+     *
+     * @param file     the OBJ file
+     * @param scale    the factor applied to every vertex, a finite positive number
+     * @param position where the file's origin goes
+     * @return the file's triangles (each vertex placed), in the order of its faces
+     * @throws IllegalArgumentException as {@link #readMesh(Path, double, Point3D)}
+     */
+    public static List<Triangle> read(Path file, double scale, Point3D position) {
+        return readMesh(file, scale, position).getTriangles();
+    }
+
+    /**
      * Reads the triangles of an OBJ file as they are: scale 1, at the origin.
      *
      * @param file the OBJ file
@@ -53,8 +81,8 @@ public final class ObjMesh {
      * @throws IllegalArgumentException when the file is null, missing, unreadable or malformed, or
      *                                  has no triangle that is not degenerate
      */
-    public static TriangleMesh read(Path file) {
-        return read(file, 1, Point3D.ZERO);
+    public static TriangleMesh readMesh(Path file) {
+        return readMesh(file, 1, Point3D.ZERO);
     }
 
     /**
@@ -70,7 +98,7 @@ public final class ObjMesh {
      *                                  instance a bad number or a face index out of range), or it
      *                                  has no triangle that is not degenerate
      */
-    public static TriangleMesh read(Path file, double scale, Point3D position) {
+    public static TriangleMesh readMesh(Path file, double scale, Point3D position) {
         requireNonNull(file, "OBJ file");
         requirePositive(scale, "scale of OBJ file " + file);
         requireNonNull(position, "position of OBJ file " + file);

@@ -179,7 +179,7 @@ public final class SceneLoader {
     }
 
     private static TriangleMesh mesh(SceneElement mesh, Path folder) {
-        TriangleMesh triangles = ObjMesh.read(folder.resolve(mesh.text("file")), mesh.number("scale"),
+        TriangleMesh triangles = ObjMesh.readMesh(folder.resolve(mesh.text("file")), mesh.number("scale"),
                 mesh.point("position"));
         Point3D farthest = Point3D.ZERO;
         for (int v = 0; v < triangles.getVerticesCount(); ++v) {

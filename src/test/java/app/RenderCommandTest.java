@@ -415,6 +415,9 @@ class RenderCommandTest {
         assertBadArgument("TC12", "--aperture must not be negative, got -1.0", scene, "-o", png, "--aperture", "-1");
         assertBadArgument("TC12", "--aperture must be a finite number, got NaN", scene, "-o", png, "--aperture", "NaN");
         assertBadArgument("TC12", "--focus must be positive, got 0.0", scene, "-o", png, "--focus", "0");
+        assertBadArgument("TC12", "--aperture must be at most 1.0E100, got 1.0E308", scene, "-o", png, "--aperture",
+                "1e308");
+        assertBadArgument("TC12", "--focus must be at most 1.0E100, got 1.0E308", scene, "-o", png, "--focus", "1e308");
         assertBadArgument("TC12", "--aperture-rays must be between 1 and 1000, got 0", scene, "-o", png,
                 "--aperture-rays", "0");
         assertFalse(Files.exists(Path.of(png)), "TC12: an image was written despite bad arguments");

@@ -55,14 +55,6 @@ class TriangleMeshTest {
         return new Ray(new Point3D(x, y, 5), new Vector(0, 0, -1));
     }
 
-    /** The triangles of a mesh as triangle objects, in its order. */
-    private static List<Triangle> triangles(TriangleMesh mesh) {
-        List<Triangle> triangles = new ArrayList<>();
-        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
-            triangles.add(mesh.getTriangle(t));
-        return triangles;
-    }
-
     /** Asserts that making a mesh throws an IllegalArgumentException whose message has the given words. */
     private static void assertRejected(Executable making, String tc, String... words) {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, making, tc + ": must throw");
@@ -159,6 +151,33 @@ class TriangleMeshTest {
         // TC11: two coincident points
         assertEquals(true, TriangleMesh.isDegenerate(Point3D.ZERO, Point3D.ZERO, new Point3D(0, 1, 0)),
                 "TC11: coincident points");
+    }
+
+    /** Test method for {@link TriangleMesh#getTriangles()} and {@link TriangleMesh#getTriangle(int)}. */
+    @Test
+    void testGetTriangles() {
+        Material material = new Material().setKd(0.4).setKs(0.2);
+        Color emission = new Color(10, 20, 30);
+        TriangleMesh mesh = new TriangleMesh(SQUARE_VERTICES, SQUARE_TRIANGLES);
+        mesh.setEmission(emission).setMaterial(material);
+        List<Triangle> triangles = mesh.getTriangles();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: two triangles, in the mesh's order, with its vertices, emission and material
+        assertEquals(2, triangles.size(), "TC01: wrong number of triangles");
+        assertEquals(List.of(new Point3D(0, 0, 0), new Point3D(1, 1, 0), new Point3D(0, 1, 0)),
+                triangles.get(1).getVertices(), "TC01: wrong vertices of triangle 1");
+        for (Triangle triangle : triangles) {
+            assertSame(material, triangle.getMaterial(), "TC01: a triangle must have the mesh's material");
+            assertEquals(emission.getColor(), triangle.getEmission().getColor(), "TC01: wrong emission");
+        }
+        // TC02: each call gives new objects, equal to getTriangle's
+        assertEquals(mesh.getTriangle(0).getVertices(), mesh.getTriangles().get(0).getVertices(),
+                "TC02: getTriangles and getTriangle must agree");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a one-triangle mesh gives a list of one
+        assertEquals(1, new TriangleMesh(SQUARE_VERTICES, new int[] { 0, 1, 2 }).getTriangles().size(),
+                "TC11: a mesh of one triangle gives one");
     }
 
     /** Test method for {@link TriangleMesh#getNormal(int)} and {@link TriangleMesh#getNormal(Point3D)}. */
@@ -296,7 +315,7 @@ class TriangleMeshTest {
     @Test
     void testSameAsTriangles() {
         TriangleMesh mesh = benchmark.SphereMesh.mesh(Point3D.ZERO, 5, 12, 20);
-        Geometries objects = new Geometries(triangles(mesh).toArray(new Triangle[0]));
+        Geometries objects = new Geometries(mesh.getTriangles().toArray(new Triangle[0]));
         BoundingVolumeHierarchy meshTree = BoundingVolumeHierarchy.build(mesh, 2);
         BoundingVolumeHierarchy meshScan = BoundingVolumeHierarchy.scan(mesh);
         BoundingVolumeHierarchy objectsTree = BoundingVolumeHierarchy.build(objects);
@@ -393,7 +412,7 @@ class TriangleMeshTest {
         if (asMesh)
             scene.geometries.add(sphere.setMaterial(matte));
         else
-            for (Triangle triangle : triangles(sphere))
+            for (Triangle triangle : sphere.getTriangles())
                 scene.geometries.add(triangle.setMaterial(matte));
         scene.lights.add(new PointLight(new Color(300, 300, 300), new Point3D(10, 0, 40)).setEdgesSize(10)
                 .setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));

@@ -422,6 +422,14 @@ class CameraTest {
         assertMessage(e, "between 1 and 1000", "TC13");
         assertEquals(1, camera.setSqrtApertureRays(1).getSqrtApertureRays(), "TC13: 1 must be accepted");
         assertEquals(1000, camera.setSqrtApertureRays(1000).getSqrtApertureRays(), "TC13: 1000 must be accepted");
+        // TC14: an aperture and a focal distance of 1e100 are accepted; just above, they are rejected
+        // naming the setting and the bound, before any ray could overflow
+        assertEquals(1e100, camera.setApertureSize(1e100).getApertureSize(), 0, "TC14: aperture 1e100 accepted");
+        assertEquals(1e100, camera.setFocalDistance(1e100).getFocalDistance(), 0, "TC14: focus 1e100 accepted");
+        e = assertThrows(IllegalArgumentException.class, () -> camera.setApertureSize(1.1e100), "TC14: 1.1e100");
+        assertMessage(e, "aperture size must be at most 1.0E100", "TC14");
+        e = assertThrows(IllegalArgumentException.class, () -> camera.setFocalDistance(1e308), "TC14: 1e308");
+        assertMessage(e, "focal distance must be at most 1.0E100", "TC14");
     }
 
     /**

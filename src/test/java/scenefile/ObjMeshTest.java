@@ -53,19 +53,6 @@ class ObjMeshTest {
         }
     }
 
-    /**
-     * The triangles of a mesh as triangle objects, in its order.
-     *
-     * @param mesh the mesh
-     * @return its triangles
-     */
-    private static List<Triangle> triangles(TriangleMesh mesh) {
-        List<Triangle> triangles = new ArrayList<>();
-        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
-            triangles.add(mesh.getTriangle(t));
-        return triangles;
-    }
-
     /** The area of a triangle: half the length of the cross product of two edges. */
     private static double area(Triangle t) {
         List<Point3D> v = t.getVertices();
@@ -173,20 +160,20 @@ class ObjMeshTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: cube scaled by 2 at (10,0,0): 12 triangles, corners at (10±2, ±2, ±2), area 6·4² = 96
-        assertCube(triangles(ObjMesh.read(cube, 2, new Point3D(10, 0, 0))), 2, new Point3D(10, 0, 0), "TC01");
+        assertCube(ObjMesh.read(cube, 2, new Point3D(10, 0, 0)), 2, new Point3D(10, 0, 0), "TC01");
 
         // TC02: read(file) is scale 1 at the origin: corners at ±1, area 24
-        assertCube(triangles(ObjMesh.read(cube)), 1, Point3D.ZERO, "TC02");
+        assertCube(ObjMesh.read(cube), 1, Point3D.ZERO, "TC02");
 
         // TC03: the example scene's model scenes/models/cube.obj: the same cube, 12 triangles, area 24
-        assertCube(triangles(ObjMesh.read(Path.of("scenes", "models", "cube.obj"))), 1, Point3D.ZERO, "TC03");
+        assertCube(ObjMesh.read(Path.of("scenes", "models", "cube.obj")), 1, Point3D.ZERO, "TC03");
 
         // TC04: a position off every axis (-3,5,7) and scale 0.5: corners at (-3±0.5, 5±0.5, 7±0.5), area 6
-        assertCube(triangles(ObjMesh.read(cube, 0.5, new Point3D(-3, 5, 7))), 0.5, new Point3D(-3, 5, 7), "TC04");
+        assertCube(ObjMesh.read(cube, 0.5, new Point3D(-3, 5, 7)), 0.5, new Point3D(-3, 5, 7), "TC04");
 
         // ===== Boundary Values Tests =====
         // TC11: a tiny scale 0.001: corners at ±0.001, area 6·0.002² = 2.4e-5
-        assertCube(triangles(ObjMesh.read(cube, 0.001, Point3D.ZERO)), 0.001, Point3D.ZERO, "TC11");
+        assertCube(ObjMesh.read(cube, 0.001, Point3D.ZERO), 0.001, Point3D.ZERO, "TC11");
     }
 
     /**
@@ -198,7 +185,7 @@ class ObjMeshTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: a triangle, a quad (fan of 2) and three degenerate faces (collinear, coincident, 2 vertices):
         // exactly 3 triangles, in file order, area 0.5 + 1 = 1.5
-        List<Triangle> mixed = triangles(ObjMesh.read(resource("mixed.obj")));
+        List<Triangle> mixed = ObjMesh.read(resource("mixed.obj"));
         assertEquals(3, mixed.size(), "TC01: degenerate faces must be skipped, 3 triangles expected");
         assertVertices(List.of(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)), mixed.get(0), "TC01");
         assertVertices(List.of(new Point3D(2, 0, 0), new Point3D(3, 0, 0), new Point3D(3, 1, 0)), mixed.get(1), "TC01");
@@ -206,7 +193,7 @@ class ObjMeshTest {
         assertEquals(1.5, totalArea(mixed), 1e-12, "TC01: wrong total area");
 
         // TC02: relative (negative) indices with texture and normal indices: 2 triangles, at z = 0 and z = 1
-        List<Triangle> relative = triangles(ObjMesh.read(resource("relative.obj")));
+        List<Triangle> relative = ObjMesh.read(resource("relative.obj"));
         assertEquals(2, relative.size(), "TC02: 2 triangles expected");
         assertVertices(List.of(new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)), relative.get(0), "TC02");
         assertVertices(List.of(new Point3D(0, 0, 1), new Point3D(1, 0, 1), new Point3D(0, 1, 1)), relative.get(1), "TC02");
@@ -218,7 +205,7 @@ class ObjMeshTest {
         // ===== Boundary Values Tests =====
         // TC11: a pentagon whose first three vertices are collinear: the fan's first triangle is skipped, the
         // other two, (0,0,0)(2,0,0)(2,2,0) and (0,0,0)(2,2,0)(0,2,0), cover the square 2x2 (area 4)
-        List<Triangle> pentagon = triangles(ObjMesh.read(resource("pentagon.obj")));
+        List<Triangle> pentagon = ObjMesh.read(resource("pentagon.obj"));
         assertEquals(2, pentagon.size(), "TC11: the degenerate triangle of the fan must be skipped");
         assertVertices(List.of(new Point3D(0, 0, 0), new Point3D(2, 0, 0), new Point3D(2, 2, 0)), pentagon.get(0), "TC11");
         assertVertices(List.of(new Point3D(0, 0, 0), new Point3D(2, 2, 0), new Point3D(0, 2, 0)), pentagon.get(1), "TC11");
@@ -226,7 +213,7 @@ class ObjMeshTest {
     }
 
     /**
-     * Test method for {@link ObjMesh#read(Path, double, Point3D)} on a large generated mesh: every vertex is
+     * Test method for {@link ObjMesh#readMesh(Path, double, Point3D)} on a large generated mesh: every vertex is
      * one point shared by the triangles around it.
      *
      * @throws IOException when the test cannot write its file
@@ -252,8 +239,8 @@ class ObjMeshTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: 200x200 quads, possibly non-planar, split into a fan each: 80000 triangles over the file's
         // 201·201 vertices, each kept once
-        TriangleMesh mesh = ObjMesh.read(file, 1, Point3D.ZERO);
-        List<Triangle> grid = triangles(mesh);
+        TriangleMesh mesh = ObjMesh.readMesh(file, 1, Point3D.ZERO);
+        List<Triangle> grid = mesh.getTriangles();
         assertEquals(2 * n * n, grid.size(), "TC01: wrong number of triangles");
         assertEquals((n + 1) * (n + 1), mesh.getVerticesCount(), "TC01: every vertex must be kept once");
 
@@ -372,7 +359,7 @@ class ObjMeshTest {
                 "longer than " + ObjMesh.MAX_LINE_LENGTH);
         // TC05: a triangle whose edges are 1e-9 long, at scale 1, is kept (the tolerance follows its size)
         Path tiny = TestFiles.write(folder, "tiny.obj", "v 0 0 0\nv 1e-9 0 0\nv 0 1e-9 0\nf 1 2 3\n");
-        assertEquals(5e-19, area(ObjMesh.read(tiny).getTriangle(0)), 1e-25, "TC05: the tiny triangle must be kept");
+        assertEquals(5e-19, area(ObjMesh.readMesh(tiny).getTriangle(0)), 1e-25, "TC05: the tiny triangle must be kept");
 
         // ===== Boundary Values Tests =====
         // TC11: index 0 (indices count from 1)
@@ -382,8 +369,8 @@ class ObjMeshTest {
         assertBadLine("under.obj", square + "f 1 2 -2147483648\n", 4, "TC12", "vertex -2147483648");
         // TC13: a face naming a vertex defined later in the file is read, and so are lines ending with \r\n
         Path windows = TestFiles.write(folder, "windows.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n");
-        assertEquals(1, ObjMesh.read(windows).getTrianglesCount(), "TC13: lines ending with \\r\\n must be read");
+        assertEquals(1, ObjMesh.readMesh(windows).getTrianglesCount(), "TC13: lines ending with \\r\\n must be read");
         Path later = TestFiles.write(folder, "later.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n");
-        assertEquals(1, ObjMesh.read(later).getTrianglesCount(), "TC13: a forward reference must be read");
+        assertEquals(1, ObjMesh.readMesh(later).getTrianglesCount(), "TC13: a forward reference must be read");
     }
 }

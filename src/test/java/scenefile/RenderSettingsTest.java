@@ -215,7 +215,8 @@ class RenderSettingsTest {
         assertFalse(render.isAdaptiveSuperSampling(), "TC03: adaptive super-sampling must be off again");
 
         // ===== Boundary Values Tests =====
-        // TC11: the five-argument constructor is the six-argument one with adaptive super-sampling off
+        // TC11: the five-argument constructor is the seven-argument one with 5 x 5 gloss rays and adaptive
+        // super-sampling off
         assertEquals(new RenderSettings(true, true, 4, 3, 7L, RayTracerBase.DEFAULT_SQRT_GLOSS_RAYS, false), CUSTOM, "TC11: five arguments mean off");
         assertEquals(CUSTOM, adaptive.withAdaptiveSuperSampling(false), "TC11: turned off again");
     }
