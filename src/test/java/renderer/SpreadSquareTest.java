@@ -71,6 +71,9 @@ class SpreadSquareTest {
         Vector r = new Vector(Math.cos(grazing), 0, Math.sin(grazing));
         Ray sharp = new Ray(POINT, r, UP);
         SpreadSquare square = new SpreadSquare(POINT, sharp, UP, 0.5);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the rays of the square's lower part would go into the floor: replaced (some), the rest kept,
+        // each kept one going up
         int replaced = 0;
         int kept = 0;
         for (int a = 0; a < 10; ++a)
@@ -83,8 +86,6 @@ class SpreadSquareTest {
                     assertTrue(ray.getDir().getZ() > 0, "TC01: a kept reflected ray must go up, got " + ray);
                 }
             }
-        // ===== Equivalence Partitions Tests =====
-        // TC01: the rays of the square's lower part would go into the floor: replaced (some), the rest kept
         assertTrue(replaced > 0 && kept > 0, "TC01: expected both replaced and kept rays, got " + replaced + " and "
                 + kept);
         // TC02: a refracted ray going down through a pane: a ray that would come back up is replaced
