@@ -4,12 +4,11 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
 
 import geometries.Intersectable.GeoPoint;
+import primitives.Parallel;
 import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
@@ -55,6 +54,8 @@ public final class BoundingVolumeHierarchy {
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
 
+    /** The name of the threads that share the build's work. */
+    private static final String BUILD_THREADS = "hierarchy-build";
     /** The bodies of one chunk of the work shared out among threads during the build. */
     private static final int CHUNK = 8192;
 
@@ -356,7 +357,7 @@ public final class BoundingVolumeHierarchy {
      */
     private static void runInChunks(int count, int threads, ChunkJob job) {
         int chunks = (count + CHUNK - 1) / CHUNK;
-        runAll(chunks, threads, c -> job.run(c * CHUNK, Math.min(count, (c + 1) * CHUNK)));
+        Parallel.forEach(chunks, threads, BUILD_THREADS, c -> job.run(c * CHUNK, Math.min(count, (c + 1) * CHUNK)));
     }
 
     /** A job over a range of items, see {@link #runInChunks}. */
@@ -365,44 +366,6 @@ public final class BoundingVolumeHierarchy {
         void run(int from, int to);
     }
 
-    /**
-     * Runs tasks 0 to count − 1, each once, on up to threads threads: the calling one and as many
-     * more as needed. Each thread takes the next task left until none is; the first failure is
-     * thrown again on the calling thread.
-     *
-     * @param count   the number of tasks
-     * @param threads the number of threads
-     * @param task    the task, called with its number
-     */
-    private static void runAll(int count, int threads, IntConsumer task) {
-        AtomicInteger next = new AtomicInteger();
-        AtomicReference<Throwable> failure = new AtomicReference<>();
-        Runnable worker = () -> {
-            try {
-                for (int t = next.getAndIncrement(); t < count && failure.get() == null; t = next.getAndIncrement())
-                    task.accept(t);
-            } catch (RuntimeException | Error e) { // thrown again by the calling thread
-                failure.compareAndSet(null, e);
-            }
-        };
-        Thread[] helpers = new Thread[Math.max(0, Math.min(threads, count) - 1)];
-        for (int h = 0; h < helpers.length; ++h) {
-            helpers[h] = new Thread(worker, "hierarchy-build-" + h);
-            helpers[h].start();
-        }
-        worker.run();
-        try {
-            for (Thread helper : helpers)
-                helper.join();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("building the hierarchy was interrupted", e);
-        }
-        if (failure.get() instanceof RuntimeException e)
-            throw e;
-        if (failure.get() instanceof Error e)
-            throw e;
-    }
 
     /** {@return a fresh scratch space for queries on this hierarchy} */
     public Query newQuery() {
@@ -1020,7 +983,7 @@ public final class BoundingVolumeHierarchy {
             int[] largestFirst = IntStream.range(0, subtreesCount).boxed()
                     .sorted(Comparator.comparingInt(t -> subtrees[4 * t + 1] - subtrees[4 * t + 2]))
                     .mapToInt(Integer::intValue).toArray();
-            runAll(subtreesCount, threads, k -> {
+            Parallel.forEach(subtreesCount, threads, BUILD_THREADS, k -> {
                 int t = largestFirst[k];
                 parts[t] = new Splitter(subtrees[4 * t + 2] - subtrees[4 * t + 1], 0);
                 parts[t].splitRoot(0, subtrees[4 * t + 1], subtrees[4 * t + 2], subtrees[4 * t + 3]);

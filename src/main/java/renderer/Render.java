@@ -1,11 +1,11 @@
 package renderer;
 
 import java.util.MissingResourceException;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.LongConsumer;
 
 import primitives.Color;
+import primitives.Parallel;
 
 import static primitives.Util.requireNonNull;
 
@@ -302,31 +302,17 @@ public class Render {
         private final int nY = imageWriter.getNy();
         private final int tilesX = (nX + TILE - 1) / TILE;
         private final int tilesCount = tilesX * ((nY + TILE - 1) / TILE);
-        private final AtomicInteger nextTile = new AtomicInteger();
         /** The pixels rendered so far: what the progress listener is told and the debug print shows. */
         private final AtomicLong pixelsDone = new AtomicLong();
-        /** The first failure of a thread (an exception, or an error such as running out of memory). */
-        private volatile Throwable failure;
 
         void run() {
-            int threads = Math.min(threadsCount, tilesCount);
-            Thread[] workers = new Thread[threads - 1];
-            for (int t = 0; t < workers.length; ++t) {
-                workers[t] = new Thread(this::work, "render-" + t);
-                workers[t].start();
-            }
             Thread printer = debugPrint ? startProgressPrinter() : null;
-            work();
-            joinAll(workers);
-            if (printer != null) {
-                printer.interrupt();
-                joinAll(printer);
-                System.out.println("\r100%");
+            try {
+                Parallel.forEach(tilesCount, threadsCount, "render", this::renderTileAndReport);
+            } finally {
+                if (printer != null)
+                    stopProgressPrinter(printer);
             }
-            if (failure instanceof RuntimeException e)
-                throw e;
-            if (failure instanceof Error e)
-                throw e;
         }
 
         private Thread startProgressPrinter() {
@@ -336,17 +322,21 @@ public class Render {
             return printer;
         }
 
-        private void work() {
+        private void stopProgressPrinter(Thread printer) {
+            printer.interrupt();
             try {
-                for (int tile = nextTile.getAndIncrement(); tile < tilesCount && failure == null;
-                     tile = nextTile.getAndIncrement()) {
-                    long done = pixelsDone.addAndGet(renderTile(tile));
-                    if (progressListener != null)
-                        progressListener.accept(done);
-                }
-            } catch (RuntimeException | OutOfMemoryError | StackOverflowError e) { // rethrown by the calling thread
-                failure = e;
+                printer.join();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
+            System.out.println("\r100%");
+        }
+
+        /** Renders one tile and tells the progress listener, if any, of the pixels done so far. */
+        private void renderTileAndReport(int tile) {
+            long done = pixelsDone.addAndGet(renderTile(tile));
+            if (progressListener != null)
+                progressListener.accept(done);
         }
 
         /** Renders one tile and returns its number of pixels. */
@@ -476,16 +466,6 @@ public class Render {
                 }
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
-            }
-        }
-
-        private void joinAll(Thread... threads) {
-            try {
-                for (Thread thread : threads)
-                    thread.join();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IllegalStateException("rendering was interrupted", e);
             }
         }
     }
