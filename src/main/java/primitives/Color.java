@@ -56,6 +56,18 @@ public class Color {
     }
 
     /**
+     * Adds a colour to this one: the same as {@link #add(Color...)} with one colour, without its array.
+     *
+     * @param color the colour to add
+     * @return the new colour, the component-wise sum
+     * @throws IllegalArgumentException when the colour is null
+     */
+    public Color add(Color color) {
+        Util.requireNonNull(color, "colour to add");
+        return saturated(r + color.r, g + color.g, b + color.b);
+    }
+
+    /**
      * Adds colours to this one.
      *
      * @param colors the colours to add
@@ -107,7 +119,15 @@ public class Color {
 
     /** {@return the AWT colour, each component truncated to an integer and clamped to 0..255} */
     public java.awt.Color getColor() {
-        return new java.awt.Color(clamp(r), clamp(g), clamp(b));
+        return new java.awt.Color(getRGB());
+    }
+
+    /**
+     * {@return the colour packed in an int as 0xRRGGBB, each component truncated to an integer and clamped
+     * to 0..255, as in {@link #getColor()} (whose {@code getRGB()} adds an opaque alpha, 0xFF000000)}
+     */
+    public int getRGB() {
+        return clamp(r) << 16 | clamp(g) << 8 | clamp(b);
     }
 
     private static int clamp(double component) {

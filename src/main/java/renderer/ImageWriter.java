@@ -1,6 +1,7 @@
 package renderer;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.AccessDeniedException;
@@ -48,6 +49,8 @@ public class ImageWriter {
     private final int nX;
     private final int nY;
     private final BufferedImage image;
+    /** The image's pixels, row after row, each 0xRRGGBB: written directly, without a colour model's conversion. */
+    private final int[] pixels;
 
     /**
      * Creates an image that will be written to {@code images/<imageName>.png}.
@@ -97,6 +100,7 @@ public class ImageWriter {
         this.nX = nX;
         this.nY = nY;
         this.image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
+        this.pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
     }
 
     private static String requireName(String imageName) {
@@ -163,7 +167,7 @@ public class ImageWriter {
      */
     public void writePixel(int xIndex, int yIndex, Color color) {
         checkPixel(xIndex, yIndex);
-        image.setRGB(xIndex, yIndex, requireNonNull(color, "pixel colour").getColor().getRGB());
+        pixels[yIndex * nX + xIndex] = requireNonNull(color, "pixel colour").getRGB();
     }
 
     /**

@@ -122,10 +122,35 @@ public final class JitteredGrid {
         if (requireNonNull(points, "sample points array").length < cells.length)
             throw new IllegalArgumentException("sample points array holds " + points.length
                     + " coordinates, the grid needs " + cells.length);
+        if (random instanceof SplitMix64 stream)
+            sampleUnchecked(stream, points);
+        else {
+            for (int i = 0; i < cells.length; ++i)
+                points[i] = random.nextDouble();
+            place(points);
+        }
+    }
+
+    /**
+     * Draws one point in every cell, as {@link #sample(RandomGenerator, double[])} does, without its
+     * checks: for the renderer, whose streams and rooms ({@link ThreadState}) are never null and
+     * always long enough.
+     *
+     * @param random the pixel's random stream (2 k² numbers are drawn from it)
+     * @param points the array filled with the points' coordinates, of length 2 k² or more
+     */
+    void sampleUnchecked(SplitMix64 random, double[] points) {
+        random.nextDoubles(points, cells.length);
+        place(points);
+    }
+
+    /** Moves the draws in [0, 1) into their cells: each coordinate n / k + draw / k, kept below (n + 1) / k. */
+    private void place(double[] points) {
         for (int i = 0; i < cells.length; ++i) {
             int cell = cells[i];
+            double x = cellStarts[cell] + points[i] * cellSize;
             // rounding may carry a draw just below 1 onto the cell's upper edge (1 itself for the last cell)
-            points[i] = Math.min(cellStarts[cell] + random.nextDouble() * cellSize, cellEnds[cell]);
+            points[i] = x < cellEnds[cell] ? x : cellEnds[cell];
         }
     }
 }

@@ -41,13 +41,18 @@ public class RayTracerBasic extends RayTracerBase {
 
     @Override
     public Color traceRay(Ray ray) {
-        GeoPoint closestPoint = findClosestIntersection(ray);
-        return closestPoint == null ? scene.background : calcColor(closestPoint, ray);
+        return traceRay(ray, threadState());
     }
 
-    private GeoPoint findClosestIntersection(Ray ray) {
+    @Override
+    Color traceRay(Ray ray, ThreadState state) {
+        GeoPoint closestPoint = findClosestIntersection(ray, state);
+        return closestPoint == null ? scene.background : calcColor(closestPoint, ray, state);
+    }
+
+    private GeoPoint findClosestIntersection(Ray ray, ThreadState state) {
         BoundingVolumeHierarchy bvh = accelerator();
-        return bvh.closestHit(ray, threadState().query(bvh));
+        return bvh.closestHit(ray, state.query(bvh));
     }
 
     /** Builds the bounding volume hierarchy over the scene's bodies, on the calling thread, unless it is up to date. */
@@ -92,48 +97,71 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     /** The colour at a point seen by a primary ray: the recursive colour plus the ambient light. */
-    private Color calcColor(GeoPoint geoPoint, Ray ray) {
-        return calcColor(geoPoint, ray, MAX_CALC_COLOR_LEVEL, INITIAL_K).add(scene.ambientLight.getIntensity());
+    private Color calcColor(GeoPoint geoPoint, Ray ray, ThreadState state) {
+        return calcColor(geoPoint, ray, MAX_CALC_COLOR_LEVEL, INITIAL_K, state)
+                .add(scene.ambientLight.getIntensity());
     }
 
-    private Color calcColor(GeoPoint geoPoint, Ray ray, int level, double k) {
+    private Color calcColor(GeoPoint geoPoint, Ray ray, int level, double k, ThreadState state) {
         Vector n = geoPoint.getNormal();
-        Color color = geoPoint.geometry.getEmission().add(calcLocalEffects(geoPoint, ray.getDir(), n, k));
-        return level == 1 ? color : color.add(calcGlobalEffects(geoPoint, ray.getDir(), n, level, k));
+        Color color = geoPoint.geometry.getEmission().add(calcLocalEffects(geoPoint, ray.getDir(), n, k, state));
+        if (level == 1)
+            return color;
+        Color global = calcGlobalEffects(geoPoint, ray.getDir(), n, level, k, state);
+        // adding black would give the same components (a sum of non-negative ones is never −0)
+        return global == Color.BLACK ? color : color.add(global);
     }
 
-    /** Diffuse and specular light from every light source that reaches the point. */
-    private Color calcLocalEffects(GeoPoint geoPoint, Vector v, Vector n, double k) {
+    /**
+     * Diffuse and specular light from every light source that reaches the point. The sum is kept in
+     * raw components, with the same arithmetic as adding the lights' {@link Color}s: each light's
+     * intensity scaled by its transparency, then by the diffuse and the specular factor, both added.
+     */
+    private Color calcLocalEffects(GeoPoint geoPoint, Vector v, Vector n, double k, ThreadState state) {
         double nv = alignZero(n.dotProduct(v));
         if (nv == 0)
             return Color.BLACK;
         Material material = geoPoint.geometry.getMaterial();
-        Color color = Color.BLACK;
+        double r = 0;
+        double g = 0;
+        double b = 0;
         for (LightSource light : scene.lights) {
             Vector l = light.getL(geoPoint.point);
             double nl = alignZero(n.dotProduct(l));
             if (nl * nv > 0) { // the light and the viewer are on the same side of the surface
-                double ktr = transparency(light, l, n, geoPoint);
+                double ktr = transparency(light, l, n, geoPoint, state);
                 if (ktr * k > MIN_CALC_COLOR_K) {
-                    Color lightIntensity = light.getIntensity(geoPoint.point).scale(ktr);
-                    color = color.add(calcDiffusive(material, nl, lightIntensity),
-                            calcSpecular(material, n, l, nl, v, lightIntensity));
+                    Color intensity = light.getIntensity(geoPoint.point);
+                    double kd = calcDiffusive(material, nl);
+                    double ks = calcSpecular(material, n, l, nl, v);
+                    double lightR = scaled(intensity.getR(), ktr);
+                    double lightG = scaled(intensity.getG(), ktr);
+                    double lightB = scaled(intensity.getB(), ktr);
+                    r = r + scaled(lightR, kd) + scaled(lightR, ks);
+                    g = g + scaled(lightG, kd) + scaled(lightG, ks);
+                    b = b + scaled(lightB, kd) + scaled(lightB, ks);
                 }
             }
         }
-        return color;
+        // the components are sums of non-negative terms: kept at the largest double at the end, as after each sum
+        return new Color(Math.min(r, Double.MAX_VALUE), Math.min(g, Double.MAX_VALUE), Math.min(b, Double.MAX_VALUE));
     }
 
-    private Color calcDiffusive(Material material, double nl, Color lightIntensity) {
-        return lightIntensity.scale(material.getKd() * Math.abs(nl));
+    /** A colour component scaled as {@link Color#scale(double)} scales it: an overflow kept at the largest double. */
+    private static double scaled(double component, double factor) {
+        return Math.min(component * factor, Double.MAX_VALUE);
     }
 
-    private Color calcSpecular(Material material, Vector n, Vector l, double nl, Vector v, Color lightIntensity) {
-        // r = l − 2(l·n)n, and the highlight is max(0, −v·r)^nShininess
+    /** {@return the diffuse factor of a light: kD · |n·l|} */
+    private double calcDiffusive(Material material, double nl) {
+        return material.getKd() * Math.abs(nl);
+    }
+
+    /** {@return the specular factor of a light: kS · max(0, −v·r)^nShininess, 0 when there is no highlight} */
+    private double calcSpecular(Material material, Vector n, Vector l, double nl, Vector v) {
+        // r = l − 2(l·n)n
         double minusVR = -alignZero(v.dotProduct(l) - 2 * nl * v.dotProduct(n));
-        if (minusVR <= 0)
-            return Color.BLACK;
-        return lightIntensity.scale(material.getKs() * Math.pow(minusVR, material.getShininess()));
+        return minusVR <= 0 ? 0 : material.getKs() * Math.pow(minusVR, material.getShininess());
     }
 
     /**
@@ -141,19 +169,19 @@ public class RayTracerBasic extends RayTracerBase {
      * ray each from a mirror and clear glass, spread rays from glossy ({@code kG}) and blurry
      * ({@code kB}) materials.
      */
-    private Color calcGlobalEffects(GeoPoint geoPoint, Vector v, Vector n, int level, double k) {
+    private Color calcGlobalEffects(GeoPoint geoPoint, Vector v, Vector n, int level, double k, ThreadState state) {
         Material material = geoPoint.geometry.getMaterial();
         Color color = Color.BLACK;
         double kR = material.getKr();
         double kkr = k * kR;
         if (kkr > MIN_CALC_COLOR_K)
             color = calcSpreadEffect(geoPoint.point, constructReflectedRay(geoPoint.point, v, n), n,
-                    material.getKg(), level, kR, kkr);
+                    material.getKg(), level, kR, kkr, state);
         double kT = material.getKt();
         double kkt = k * kT;
         if (kkt > MIN_CALC_COLOR_K)
             color = color.add(calcSpreadEffect(geoPoint.point, constructRefractedRay(geoPoint.point, v, n), n,
-                    material.getKb(), level, kT, kkt));
+                    material.getKb(), level, kT, kkt, state));
         return color;
     }
 
@@ -171,19 +199,19 @@ public class RayTracerBasic extends RayTracerBase {
      * @param level    the recursion level of the point
      * @param kx       the material's kR or kT
      * @param kkx      the accumulated factor of the reflected or refracted light
+     * @param state    the calling thread's state
      * @return the reflected or refracted colour, scaled by kx
      */
     private Color calcSpreadEffect(Point3D point, Ray sharpRay, Vector n, double spread, int level, double kx,
-                                   double kkx) {
+                                   double kkx, ThreadState state) {
         if (spread == 0)
-            return calcGlobalEffect(sharpRay, level, kx, kkx);
-        ThreadState state = threadState();
+            return calcGlobalEffect(sharpRay, level, kx, kkx, state);
         SpreadSquare square = new SpreadSquare(point, sharpRay, n, spread);
         if (state.inSpreadBeam) {
             double[] sample = state.spreadPoint();
-            SINGLE_SPREAD_RAY.sample(state.random, sample);
+            SINGLE_SPREAD_RAY.sampleUnchecked(state.random, sample);
             ++state.spreadRays;
-            return calcGlobalEffect(square.ray(sample[0], sample[1]), level, kx, kkx);
+            return calcGlobalEffect(square.ray(sample[0], sample[1]), level, kx, kkx, state);
         }
         return calcSpreadBeam(square, level, kx, kkx, state);
     }
@@ -203,7 +231,7 @@ public class RayTracerBasic extends RayTracerBase {
         JitteredGrid grid = getGlossGrid();
         int count = grid.getSamplesCount();
         double[] samples = state.spreadPoints(grid);
-        grid.sample(state.random, samples);
+        grid.sampleUnchecked(state.random, samples);
         state.spreadRays += count;
         state.inSpreadBeam = true;
         try {
@@ -211,7 +239,7 @@ public class RayTracerBasic extends RayTracerBase {
             double g = 0;
             double b = 0;
             for (int s = 0; s < count; ++s) {
-                Color color = calcGlobalEffect(square.ray(samples[2 * s], samples[2 * s + 1]), level, 1, kkx);
+                Color color = calcGlobalEffect(square.ray(samples[2 * s], samples[2 * s + 1]), level, 1, kkx, state);
                 r += color.getR();
                 g += color.getG();
                 b += color.getB();
@@ -223,9 +251,9 @@ public class RayTracerBasic extends RayTracerBase {
         }
     }
 
-    private Color calcGlobalEffect(Ray ray, int level, double kx, double kkx) {
-        GeoPoint geoPoint = findClosestIntersection(ray);
-        return (geoPoint == null ? scene.background : calcColor(geoPoint, ray, level - 1, kkx)).scale(kx);
+    private Color calcGlobalEffect(Ray ray, int level, double kx, double kkx, ThreadState state) {
+        GeoPoint geoPoint = findClosestIntersection(ray, state);
+        return (geoPoint == null ? scene.background : calcColor(geoPoint, ray, level - 1, kkx, state)).scale(kx);
     }
 
     private Ray constructReflectedRay(Point3D point, Vector v, Vector n) {
@@ -248,10 +276,10 @@ public class RayTracerBasic extends RayTracerBase {
      * @param l        the unit direction from the light to the point
      * @param n        the surface normal at the point
      * @param geoPoint the lit point
+     * @param state    the calling thread's state
      * @return the transparency factor in [0, 1]
      */
-    double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint) {
-        ThreadState state = threadState();
+    double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint, ThreadState state) {
         BoundingVolumeHierarchy bvh = accelerator();
         Point3D point = geoPoint.point;
         // the ray to the light itself, or to the centre of its square
@@ -282,7 +310,7 @@ public class RayTracerBasic extends RayTracerBase {
         if (square.isOpen()) // the points are not needed, but the numbers drawn after them must stay the same
             state.random.skip(2L * grid.getSamplesCount());
         else
-            grid.sample(state.random, samples);
+            grid.sampleUnchecked(state.random, samples);
         int outline = grid.getOutlineCount();
         double ktr = square.visibility(centreDistance, samples, outline);
         int rays = 1 + outline;

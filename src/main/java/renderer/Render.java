@@ -368,12 +368,12 @@ public class Render {
         private Color sample(ThreadState state, int j, int i, double dx, double dy) {
             if (!camera.hasAperture()) {
                 ++state.primaryRays;
-                return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i, dx, dy));
+                return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i, dx, dy), state);
             }
             JitteredGrid apertureGrid = camera.getApertureGrid();
             state.primaryRays += apertureGrid.getSamplesCount();
             return average(apertureGrid, state.aperturePoints(apertureGrid), state,
-                    (u, v) -> rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v)));
+                    (u, v) -> rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v), state));
         }
 
         /**
@@ -386,7 +386,7 @@ public class Render {
          * @return the average colour
          */
         private static Color average(JitteredGrid grid, double[] points, ThreadState state, PointColor colorAt) {
-            grid.sample(state.random, points);
+            grid.sampleUnchecked(state.random, points);
             int count = grid.getSamplesCount();
             Color color = Color.BLACK;
             for (int s = 0; s < count; ++s)

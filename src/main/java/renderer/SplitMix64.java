@@ -47,14 +47,39 @@ final class SplitMix64 implements RandomGenerator {
     @Override
     public long nextLong() {
         seed += GOLDEN_GAMMA;
-        long z = seed;
+        return mix(seed);
+    }
+
+    @Override
+    public double nextDouble() {
+        return unit(nextLong());
+    }
+
+    /**
+     * Draws a run of doubles: the same numbers as as many {@link #nextDouble()} calls, the stream's
+     * state kept in a register meanwhile rather than stored after every draw.
+     *
+     * @param into  the array the numbers go to, from index 0
+     * @param count how many to draw, at most the array's length
+     */
+    void nextDoubles(double[] into, int count) {
+        long state = seed;
+        for (int i = 0; i < count; ++i) {
+            state += GOLDEN_GAMMA;
+            into[i] = unit(mix(state));
+        }
+        seed = state;
+    }
+
+    /** The number drawn when the stream's state becomes z: the finaliser of SplitMix64. */
+    private static long mix(long z) {
         z = (z ^ (z >>> 30)) * 0xbf58476d1ce4e5b9L;
         z = (z ^ (z >>> 27)) * 0x94d049bb133111ebL;
         return z ^ (z >>> 31);
     }
 
-    @Override
-    public double nextDouble() {
-        return (nextLong() >>> 11) * DOUBLE_UNIT;
+    /** The double in [0, 1) made of a long's top 53 bits. */
+    private static double unit(long bits) {
+        return (bits >>> 11) * DOUBLE_UNIT;
     }
 }

@@ -225,4 +225,50 @@ class ColorTest {
         // TC10: within the tolerance (5e-11): equal
         assertEquals(c, new Color(10 + 5e-11, 20, 30), "TC10: colours within the tolerance must be equal");
     }
+
+    /** Test method for {@link primitives.Color#add(Color)}: the same sum as adding an array of one colour. */
+    @Test
+    void testAddOne() {
+        Color c1 = new Color(10.1, 20.3, 0.7);
+        Color c2 = new Color(1e-3, 2.9, 1e20);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: (10.1, 20.3, 0.7) + (0.001, 2.9, 1e20): the components of add(Color...) with one colour, bit for bit
+        Color one = c1.add(c2);
+        Color array = c1.add(new Color[] { c2 });
+        assertEquals(array.getR(), one.getR(), 0, "TC01: wrong red");
+        assertEquals(array.getG(), one.getG(), 0, "TC01: wrong green");
+        assertEquals(array.getB(), one.getB(), 0, "TC01: wrong blue");
+        // TC02: a null colour is rejected with a message naming "null"
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> c1.add((Color) null),
+                "TC02: null colour must be rejected");
+        assertMessage(e, "null", "TC02");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a sum past the largest double stays at the largest double (MAX, 2, 0)
+        Color huge = new Color(Double.MAX_VALUE, 1, 0);
+        assertColor(Double.MAX_VALUE, 2, 0, huge.add(huge), "TC11: an overflowing sum must saturate");
+        // TC12: adding BLACK gives the same components (10.1, 20.3, 0.7)
+        assertColor(10.1, 20.3, 0.7, c1.add(Color.BLACK), "TC12: adding BLACK must not change the colour");
+    }
+
+    /** Test method for {@link primitives.Color#getRGB()}. */
+    @Test
+    void testGetRGB() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: components in range, truncated: (10.9, 20, 30.5) → 0x0A141E
+        assertEquals(0x0A141E, new Color(10.9, 20, 30.5).getRGB(), "TC01: wrong packed colour");
+        // TC02: components above 255 are clamped: (300, 12.7, 1e300) → 0xFF0CFF
+        assertEquals(0xFF0CFF, new Color(300, 12.7, 1e300).getRGB(), "TC02: components must be clamped");
+        // TC03: the AWT colour's RGB without its alpha, for several colours
+        for (Color c : new Color[] { new Color(1, 2, 3), new Color(255.5, 0.5, 128), new Color(64, 1000, 254.99) })
+            assertEquals(c.getColor().getRGB() & 0xFFFFFF, c.getRGB(), "TC03: must agree with getColor() for " + c);
+
+        // ===== Boundary Values Tests =====
+        // TC11: black → 0
+        assertEquals(0, Color.BLACK.getRGB(), "TC11: black must be 0");
+        // TC12: 255 and just below 256 give 255, just below 1 gives 0: (255, 255.999, 0.999) → 0xFFFF00
+        assertEquals(0xFFFF00, new Color(255, 255.999, 0.999).getRGB(), "TC12: wrong truncation at the limits");
+        // TC13: the largest double is clamped to 255: (MAX, 0, 0) → 0xFF0000
+        assertEquals(0xFF0000, new Color(Double.MAX_VALUE, 0, 0).getRGB(), "TC13: the largest double must give 255");
+    }
 }

@@ -327,4 +327,45 @@ class JitteredGridTest {
         grid.sample(new SplittableRandom(1), points);
         assertStratified(grid, points, "TC12");
     }
+
+    /**
+     * Test method for {@link JitteredGrid#sampleUnchecked(SplitMix64, double[])} and the SplitMix64 path of
+     * {@link JitteredGrid#sample}: the same points, bit for bit, as a stream drawing one number at a time.
+     */
+    @Test
+    void testSampleUnchecked() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: k = 3, 4 and 9, several seeds: the renderer's path gives the points of SplittableRandom
+        // (the same numbers, drawn one at a time through RandomGenerator), and draws 2k² numbers
+        for (int k : new int[] { 3, 4, 9 })
+            for (long seed = 1; seed <= 10; ++seed) {
+                JitteredGrid grid = new JitteredGrid(k);
+                SplitMix64 stream = new SplitMix64(seed);
+                double[] points = new double[2 * k * k];
+                grid.sampleUnchecked(stream, points);
+                assertArrayEquals(sample(grid, seed), points, 0, "TC01: k = " + k + ", seed " + seed);
+                SplittableRandom twin = new SplittableRandom(seed);
+                for (int d = 0; d < 2 * k * k; ++d)
+                    twin.nextDouble();
+                assertEquals(twin.nextLong(), stream.nextLong(), "TC01: 2k² numbers must be drawn for k = " + k);
+            }
+        // TC02: the public method given a SplitMix64 gives the same points as the unchecked one
+        JitteredGrid grid = new JitteredGrid(9);
+        double[] checked = new double[162];
+        double[] unchecked = new double[162];
+        grid.sample((RandomGenerator) new SplitMix64(31), checked);
+        grid.sampleUnchecked(new SplitMix64(31), unchecked);
+        assertArrayEquals(checked, unchecked, 0, "TC02: both paths must give the same points");
+
+        // ===== Boundary Values Tests =====
+        // TC11: k = 1: the single point is the stream's first two draws
+        double[] single = new double[2];
+        new JitteredGrid(1).sampleUnchecked(new SplitMix64(32), single);
+        SplittableRandom reference = new SplittableRandom(32);
+        assertArrayEquals(new double[] { reference.nextDouble(), reference.nextDouble() }, single, 0,
+                "TC11: k = 1 must give the first two draws");
+        // TC12: the public method still checks its arguments when given a SplitMix64 (a short array)
+        assertThrows(IllegalArgumentException.class, () -> grid.sample(new SplitMix64(33), new double[161]),
+                "TC12: a short array must be rejected");
+    }
 }

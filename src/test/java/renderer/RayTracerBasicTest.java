@@ -160,6 +160,64 @@ class RayTracerBasicTest {
                 "TC12: a grazing light must not light the surface");
     }
 
+    /**
+     * The colour the Phong model gives at the origin of a floor seen straight down, worked out with
+     * {@link Color}'s own operations, light after light: the reference the tracer's sums must match bit for bit.
+     */
+    private static Color phongWithColors(Material material, Color emission, Color ambient, DirectionalLight... lights) {
+        Vector n = new Vector(0, 0, 1);
+        Color local = Color.BLACK;
+        for (DirectionalLight light : lights) {
+            Vector l = light.getL(Point3D.ZERO);
+            double nl = n.dotProduct(l);
+            double minusVR = -(DOWN.dotProduct(l) - 2 * nl * DOWN.dotProduct(n));
+            Color intensity = light.getIntensity(Point3D.ZERO).scale(1.0);
+            Color specular = minusVR <= 0 ? Color.BLACK
+                    : intensity.scale(material.getKs() * Math.pow(minusVR, material.getShininess()));
+            local = local.add(intensity.scale(material.getKd() * Math.abs(nl)), specular);
+        }
+        return emission.add(local).add(Color.BLACK).add(ambient);
+    }
+
+    /** Asserts that two colours have the same components, bit for bit. */
+    private static void assertSameComponents(Color expected, Color actual, String message) {
+        assertEquals(expected.getR(), actual.getR(), 0, message + " (red)");
+        assertEquals(expected.getG(), actual.getG(), 0, message + " (green)");
+        assertEquals(expected.getB(), actual.getB(), 0, message + " (blue)");
+    }
+
+    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: the lights add up exactly as their {@link Color}s would. */
+    @Test
+    void testTraceRayLightSum() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: two lights at odd angles, diffuse and specular, with emission and ambient light: the
+        // components of the sum of Colors, bit for bit
+        Material material = new Material().setKd(0.37).setKs(0.61).setShininess(7);
+        Color emission = new Color(1.1, 2.3, 0.7);
+        DirectionalLight first = new DirectionalLight(new Color(211.3, 97.1, 41.9), new Vector(0.3, 0.7, -1));
+        DirectionalLight second = new DirectionalLight(new Color(13.7, 250.9, 77.7), new Vector(-0.9, 0.2, -0.4));
+        Scene scene = new Scene("two lights");
+        scene.geometries.add(floor(material, emission));
+        scene.lights.add(first);
+        scene.lights.add(second);
+        scene.setAmbientLight(new AmbientLight(new Color(30.3, 20.2, 10.1), 0.3));
+        assertSameComponents(phongWithColors(material, emission, scene.ambientLight.getIntensity(), first, second),
+                new RayTracerBasic(scene).traceRay(RAY_DOWN), "TC01: the sum must be that of the lights' colours");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a light so bright that its diffuse and specular terms overflow: red and green stay at the
+        // largest double, blue is kD·I + kS·I = 0.5 + 0.5 = 1
+        Material full = new Material().setKd(1).setKs(1).setShininess(1);
+        DirectionalLight blinding = new DirectionalLight(new Color(Double.MAX_VALUE, Double.MAX_VALUE / 2, 0.5), DOWN);
+        Scene bright = new Scene("blinding light");
+        bright.geometries.add(floor(full, Color.BLACK));
+        bright.lights.add(blinding);
+        Color traced = new RayTracerBasic(bright).traceRay(RAY_DOWN);
+        assertColor(Double.MAX_VALUE, Double.MAX_VALUE, 1, traced, "TC11: an overflowing sum must saturate");
+        assertSameComponents(phongWithColors(full, Color.BLACK, Color.BLACK, blinding), traced,
+                "TC11: the saturated sum must be that of the lights' colours");
+    }
+
     /** Builds a floor lit straight from above by a point light, with an optional blocker between. */
     private static Scene shadowScene(Material blockerMaterial) {
         Scene scene = new Scene("shadow");
@@ -511,9 +569,10 @@ class RayTracerBasicTest {
 
     /** The shadow factor of a light at the origin of the tracer's floor (its first body), for pixel (j, 0). */
     private static double shadowFactor(RayTracerBasic tracer, LightSource light, int j) {
-        tracer.startPixel(j, 0);
+        ThreadState state = tracer.startPixel(j, 0);
         Plane floor = (Plane) tracer.scene.geometries.getGeometries().get(0);
-        return tracer.transparency(light, light.getL(Point3D.ZERO), FLOOR_NORMAL, new GeoPoint(floor, Point3D.ZERO));
+        return tracer.transparency(light, light.getL(Point3D.ZERO), FLOOR_NORMAL, new GeoPoint(floor, Point3D.ZERO),
+                state);
     }
 
     /**
@@ -531,15 +590,15 @@ class RayTracerBasicTest {
         Plane floor = (Plane) tracer.scene.geometries.getGeometries().get(0);
         GeoPoint origin = new GeoPoint(floor, Point3D.ZERO);
         Vector l = light.getL(Point3D.ZERO);
-        tracer.startPixel(0, 0);
+        ThreadState state = tracer.startPixel(0, 0);
         double factor = 0;
         // the first calls make the thread's scratch space (and the JVM may allocate while warming up)
         for (int c = 0; c < 3 * calls; ++c)
-            factor += tracer.transparency(light, l, FLOOR_NORMAL, origin);
+            factor += tracer.transparency(light, l, FLOOR_NORMAL, origin, state);
         threads.getCurrentThreadAllocatedBytes(); // its own first call may allocate
         long before = threads.getCurrentThreadAllocatedBytes();
         for (int c = 0; c < calls; ++c)
-            factor += tracer.transparency(light, l, FLOOR_NORMAL, origin);
+            factor += tracer.transparency(light, l, FLOOR_NORMAL, origin, state);
         long allocated = threads.getCurrentThreadAllocatedBytes() - before;
         assertTrue(factor >= 0, "the factors must not be negative");
         return allocated;

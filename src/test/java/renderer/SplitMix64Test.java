@@ -92,4 +92,32 @@ class SplitMix64Test {
         stepwise.skip(1);
         assertEquals(stepwise.nextLong(), far.nextLong(), "TC12: one long skip must equal the sum of shorter ones");
     }
+
+    /** Test method for {@link SplitMix64#nextDoubles(double[], int)}: the numbers of as many nextDouble() calls. */
+    @Test
+    void testNextDoubles() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 162 doubles (a 9 × 9 grid's draws) are those of 162 nextDouble() calls, bit for bit,
+        // and the stream is then where those calls leave it
+        SplitMix64 run = new SplitMix64(21);
+        SplitMix64 oneByOne = new SplitMix64(21);
+        double[] doubles = new double[162];
+        run.nextDoubles(doubles, doubles.length);
+        for (int i = 0; i < doubles.length; ++i)
+            assertEquals(oneByOne.nextDouble(), doubles[i], 0, "TC01: draw " + i);
+        assertEquals(oneByOne.nextLong(), run.nextLong(), "TC01: the stream must be past the 162 draws");
+
+        // ===== Boundary Values Tests =====
+        // TC11: no draw: the array stays as it was (-1) and the stream does not move
+        SplitMix64 none = new SplitMix64(22);
+        double[] untouched = { -1 };
+        none.nextDoubles(untouched, 0);
+        assertEquals(-1, untouched[0], 0, "TC11: drawing nothing must leave the array as it was");
+        assertEquals(new SplittableRandom(22).nextLong(), none.nextLong(), "TC11: drawing nothing must not move the stream");
+        // TC12: fewer draws than the array holds: the rest stays as it was (-1)
+        double[] longer = { -1, -1, -1 };
+        new SplitMix64(23).nextDoubles(longer, 2);
+        assertEquals(new SplittableRandom(23).nextDouble(), longer[0], 0, "TC12: the first draw");
+        assertEquals(-1, longer[2], 0, "TC12: the room past the draws must be left as it was");
+    }
 }
