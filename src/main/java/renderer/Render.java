@@ -373,7 +373,8 @@ public class Render {
             JitteredGrid apertureGrid = camera.getApertureGrid();
             state.primaryRays += apertureGrid.getSamplesCount();
             return average(apertureGrid, state.aperturePoints(apertureGrid), state,
-                    (u, v) -> rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v), state));
+                    (u, v) -> rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v),
+                            state));
         }
 
         /**

@@ -186,7 +186,7 @@ class RayTracerBasicTest {
         assertEquals(expected.getB(), actual.getB(), 0, message + " (blue)");
     }
 
-    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: the lights add up exactly as their {@link Color}s would. */
+    /** Test method for {@link RayTracerBasic#traceRay(Ray)}: the lights add up as their Colors would, bit for bit. */
     @Test
     void testTraceRayLightSum() {
         // ===== Equivalence Partitions Tests =====

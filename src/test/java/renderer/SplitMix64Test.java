@@ -113,7 +113,8 @@ class SplitMix64Test {
         double[] untouched = { -1 };
         none.nextDoubles(untouched, 0);
         assertEquals(-1, untouched[0], 0, "TC11: drawing nothing must leave the array as it was");
-        assertEquals(new SplittableRandom(22).nextLong(), none.nextLong(), "TC11: drawing nothing must not move the stream");
+        assertEquals(new SplittableRandom(22).nextLong(), none.nextLong(),
+                "TC11: drawing nothing must not move the stream");
         // TC12: fewer draws than the array holds: the rest stays as it was (-1)
         double[] longer = { -1, -1, -1 };
         new SplitMix64(23).nextDoubles(longer, 2);
