@@ -51,6 +51,8 @@ public final class BoundingVolumeHierarchy {
     /** The box around nothing, which any box grows: copied, never changed. */
     private static final double[] EMPTY_BOX = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+    /** What {@link #boxEntry} answers for a ray that misses the box: no entry distance is negative. */
+    private static final double MISSED = -1;
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
 
@@ -101,6 +103,8 @@ public final class BoundingVolumeHierarchy {
      */
     public static final class Query {
         private final int[] stack;
+        /** Where the ray of a walk enters the box of each node on the stack. */
+        private final double[] entries;
         private double maxT;
         private Geometry geometry;
         /** The part of {@link #geometry} hit (a mesh's triangle), or −1. */
@@ -135,6 +139,7 @@ public final class BoundingVolumeHierarchy {
 
         private Query(int stackSize, int unboundedLength) {
             this.stack = new int[stackSize];
+            this.entries = new double[stackSize];
             this.firstRays = new int[stackSize];
             this.gatheredUnbounded = new Geometry[unboundedLength];
         }
@@ -762,7 +767,10 @@ public final class BoundingVolumeHierarchy {
     }
 
     /**
-     * Walks the subtree below a node, the way {@link #traverse} walks the tree.
+     * Walks the subtree below a node, the way {@link #traverse} walks the tree. The stack keeps with
+     * each node set aside the distance where the ray enters its box, so a closest-hit walk skips it
+     * when a nearer hit has been found since (the box test again, with the shrunk distance, would
+     * fail: the answer is the same, found with fewer tests).
      *
      * @return false when a transmittance walk stopped early (the light is blocked)
      */
@@ -778,6 +786,7 @@ public final class BoundingVolumeHierarchy {
             return true;
         int negative = (dx < 0 ? 1 : 0) | (dy < 0 ? 2 : 0) | (dz < 0 ? 4 : 0);
         int[] stack = query.stack;
+        double[] entries = query.entries;
         int top = 0;
         int node = root;
         while (true) {
@@ -786,15 +795,17 @@ public final class BoundingVolumeHierarchy {
             if (count < 0) {
                 int near = first + (negative >> (-1 - count) & 1);
                 int far = 2 * first + 1 - near;
-                boolean nearHit = boxHit(near, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT);
-                boolean farHit = boxHit(far, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT);
-                if (nearHit) {
-                    if (farHit)
+                double nearEntry = boxEntry(near, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT);
+                double farEntry = boxEntry(far, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT);
+                if (nearEntry != MISSED) {
+                    if (farEntry != MISSED) {
+                        entries[top] = farEntry;
                         stack[top++] = far;
+                    }
                     node = near;
                     continue;
                 }
-                if (farHit) {
+                if (farEntry != MISSED) {
                     node = far;
                     continue;
                 }
@@ -802,9 +813,11 @@ public final class BoundingVolumeHierarchy {
                 for (int b = first; b < first + count; ++b)
                     if (!visitBody(b, query, ox, oy, oz, dx, dy, dz, transmittance, minK))
                         return false;
-            if (top == 0)
-                return true;
-            node = stack[--top];
+            do {
+                if (top == 0)
+                    return true;
+                node = stack[--top];
+            } while (entries[top] > query.maxT);
         }
     }
 
@@ -885,6 +898,16 @@ public final class BoundingVolumeHierarchy {
      */
     private boolean boxHit(int node, double ox, double oy, double oz, double ix, double iy, double iz,
                            int nearX, int nearY, int nearZ, double maxT) {
+        return boxEntry(node, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, maxT) != MISSED;
+    }
+
+    /**
+     * {@link #boxHit}, telling where the ray enters the box.
+     *
+     * @return the distance (0 or more) where the ray enters the box, or {@link #MISSED}
+     */
+    private double boxEntry(int node, double ox, double oy, double oz, double ix, double iy, double iz,
+                            int nearX, int nearY, int nearZ, double maxT) {
         double[] box = nodeBounds;
         int b = 6 * node;
         double near = (box[b + nearX] - ox) * ix;
@@ -899,7 +922,7 @@ public final class BoundingVolumeHierarchy {
         hi = (box[b + 5 - nearZ] - oz) * iz;
         near = lo > near ? lo : near;
         far = hi < far ? hi : far;
-        return near <= far;
+        return near <= far ? near : MISSED;
     }
 
     /**
