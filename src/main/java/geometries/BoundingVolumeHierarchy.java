@@ -747,30 +747,29 @@ public final class BoundingVolumeHierarchy {
         return count;
     }
 
-    /**
-     * Whether ray r of the packet meets a node's box before its distance: the test of {@link #boxHit}, on
-     * the same numbers, its near faces chosen among the box's numbers, which stay the same through a
-     * scan of the rays, rather than by their place in the array.
-     */
+    /** Whether ray r of the packet meets a node's box before its distance, by {@link #slabsMeet}. */
     private boolean rayMeets(Query query, int r, int node) {
         double[] box = nodeBounds;
         int b = 6 * node;
-        double x0 = box[b];
-        double y0 = box[b + 1];
-        double z0 = box[b + 2];
-        double x1 = box[b + 3];
-        double y1 = box[b + 4];
-        double z1 = box[b + 5];
-        double ix = query.ix[r];
-        double iy = query.iy[r];
-        double iz = query.iz[r];
-        double ox = query.ox[r];
-        double oy = query.oy[r];
-        double oz = query.oz[r];
+        return slabsMeet(box[b], box[b + 1], box[b + 2], box[b + 3], box[b + 4], box[b + 5], query.ox[r], query.oy[r],
+                query.oz[r], query.ix[r], query.iy[r], query.iz[r], query.maxTs[r]);
+    }
+
+    /**
+     * Whether a ray meets a box [x0, x1] × [y0, y1] × [z0, z1] between its start and maxT: the test of
+     * {@link #boxHit} on the same numbers, its near faces chosen among the box's numbers (which stay
+     * the same through a scan of the packet's rays) rather than by their place in the array. Small
+     * enough for the JIT to inline.
+     *
+     * @param ix the inverse of the ray's direction, x
+     * @param iy the same for y
+     * @param iz the same for z
+     */
+    private static boolean slabsMeet(double x0, double y0, double z0, double x1, double y1, double z1, double ox,
+                                     double oy, double oz, double ix, double iy, double iz, double maxT) {
         double near = ((ix < 0 ? x1 : x0) - ox) * ix;
         double far = ((ix < 0 ? x0 : x1) - ox) * ix;
         near = near > 0 ? near : 0;
-        double maxT = query.maxTs[r];
         far = far < maxT ? far : maxT;
         double lo = ((iy < 0 ? y1 : y0) - oy) * iy;
         double hi = ((iy < 0 ? y0 : y1) - oy) * iy;
