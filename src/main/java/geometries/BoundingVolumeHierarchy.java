@@ -636,8 +636,9 @@ public final class BoundingVolumeHierarchy {
     /**
      * Walks the subtree the last {@link #gather} kept with the packet's rays still unblocked: a node is
      * visited with the first and the last of them that meet its box (the rays before the first and
-     * after the last do not), a child looked for between its parent's, and children are entered
-     * nearer first by the first ray's direction. A leaf lists the rays between them that meet its box
+     * after the last do not), a child's looked for between its parent's (a child's box lies inside its
+     * parent's: the same numbers or nearer in, so a ray that misses the parent misses the child), and
+     * children are entered nearer first by the first ray's direction. A leaf lists the rays between them that meet its box
      * and tests its bodies on them ({@link #leafOnPacket}).
      *
      * @param active the number of unblocked rays
