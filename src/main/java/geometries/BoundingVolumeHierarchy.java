@@ -121,8 +121,13 @@ public final class BoundingVolumeHierarchy {
         /** The unbounded bodies {@link #gather} found, and how many. */
         private final Geometry[] gatheredUnbounded;
         private int unboundedCount;
-        /** The first ray of the packet that meets each node on the stack of a packet walk. */
+        /** The first and the last ray of the packet that may meet each node on the stack of a packet walk. */
         private final int[] firstRays;
+        private final int[] lastRays;
+        /** The rays of the packet that meet the leaf a packet walk is at, in order. */
+        private int[] rays = new int[0];
+        /** A mesh's triangle's data (p1, e1, e2, the parallel limit), read once per leaf of a packet walk. */
+        private final double[] triangle = new double[TriangleMesh.TRIANGLE_DATA];
         /** The rays of the packet: origins, unit directions, their inverses, distances and transparencies. */
         private double[] ox = new double[0];
         private double[] oy = ox;
@@ -141,6 +146,7 @@ public final class BoundingVolumeHierarchy {
             this.stack = new int[stackSize];
             this.entries = new double[stackSize];
             this.firstRays = new int[stackSize];
+            this.lastRays = new int[stackSize];
             this.gatheredUnbounded = new Geometry[unboundedLength];
         }
 
@@ -206,6 +212,7 @@ public final class BoundingVolumeHierarchy {
             iz = Arrays.copyOf(iz, capacity);
             maxTs = Arrays.copyOf(maxTs, capacity);
             ktrs = Arrays.copyOf(ktrs, capacity);
+            rays = Arrays.copyOf(rays, capacity);
         }
 
         /**
@@ -632,107 +639,235 @@ public final class BoundingVolumeHierarchy {
     }
 
     /**
-     * Walks the subtree the last {@link #gather} kept with the packet's rays still unblocked: the
-     * stack holds each node with the first ray that meets its box (the rays before it do not), and
-     * children are entered nearer first by that ray's direction.
+     * Walks the subtree the last {@link #gather} kept with the packet's rays still unblocked: a node is
+     * visited with the first and the last of them that meet its box (the rays before the first and
+     * after the last do not), a child's looked for between its parent's (a child's box lies inside its
+     * parent's: the same numbers or nearer in, so a ray that misses the parent misses the child), and
+     * children are entered nearer first by the first ray's direction. A leaf lists the rays between them that meet its box
+     * and tests its bodies on them ({@link #leafOnPacket}).
      *
      * @param active the number of unblocked rays
      */
     private void walkPacket(Query query, int active, double minK) {
         int n = query.packetSize;
-        for (int r = 0; r < n; ++r) {
-            query.ix[r] = 1 / query.dx[r];
-            query.iy[r] = 1 / query.dy[r];
-            query.iz[r] = 1 / query.dz[r];
-        }
+        invertDirections(query);
         int node = query.subtree;
-        int first = firstRayMeeting(query, node, 0);
+        int first = firstRayMeeting(query, node, 0, n - 1);
+        int last = lastRayMeeting(query, node, first, n - 1);
         int[] stack = query.stack;
         int[] firstRays = query.firstRays;
+        int[] lastRays = query.lastRays;
         int top = 0;
         while (first < n) {
             int link = nodeLinks[2 * node];
             int count = nodeLinks[2 * node + 1];
             if (count < 0) {
-                int negative = query.dx[first] < 0 ? 1 : 0;
-                negative |= query.dy[first] < 0 ? 2 : 0;
-                negative |= query.dz[first] < 0 ? 4 : 0;
-                int near = link + (negative >> (-1 - count) & 1);
+                int near = link + (negativeAxes(query, first) >> (-1 - count) & 1);
                 int far = 2 * link + 1 - near;
-                int nearFirst = packetMeets(query, near, first);
-                int farFirst = packetMeets(query, far, first);
+                int nearFirst = packetMeets(query, near, first, last);
+                int farFirst = packetMeets(query, far, first, last);
                 if (nearFirst < n) {
                     if (farFirst < n) {
                         stack[top] = far;
-                        firstRays[top++] = farFirst;
+                        firstRays[top] = farFirst;
+                        lastRays[top++] = last;
                     }
                     node = near;
                     first = nearFirst;
+                    last = lastRayMeeting(query, node, first, last);
                     continue;
                 }
                 if (farFirst < n) {
                     node = far;
                     first = farFirst;
+                    last = lastRayMeeting(query, node, first, last);
                     continue;
                 }
             } else {
-                active -= leafOnPacket(query, node, link, count, first, minK);
+                active -= leafOnPacket(query, link, count, raysMeeting(query, node, first, last), minK);
                 if (active == 0)
                     return;
             }
             first = n;
             while (top > 0 && first == n) {
                 node = stack[--top];
-                first = firstRays[top] < n && query.ktrs[firstRays[top]] > 0 ? firstRays[top]
-                        : firstRayMeeting(query, node, firstRays[top]);
+                last = lastRays[top];
+                first = query.ktrs[firstRays[top]] > 0 ? firstRays[top]
+                        : firstRayMeeting(query, node, firstRays[top], last);
+                if (first < n)
+                    last = lastRayMeeting(query, node, first, last);
             }
         }
     }
 
-    /** The first unblocked ray from a given one on that meets a node's box, n when none does or the pyramid misses it. */
-    private int packetMeets(Query query, int node, int from) {
-        return query.frustum.meetsBox(nodeBounds, 6 * node) ? firstRayMeeting(query, node, from) : query.packetSize;
+    /** Sets the inverses of the packet's directions. */
+    private static void invertDirections(Query query) {
+        for (int r = 0; r < query.packetSize; ++r) {
+            query.ix[r] = 1 / query.dx[r];
+            query.iy[r] = 1 / query.dy[r];
+            query.iz[r] = 1 / query.dz[r];
+        }
     }
 
-    /** The first unblocked ray from a given one on that meets a node's box, or the packet's size when none does. */
-    private int firstRayMeeting(Query query, int node, int from) {
-        int n = query.packetSize;
-        for (int r = from; r < n; ++r)
-            if (query.ktrs[r] > 0 && rayMeets(query, node, r))
+    /** {@return the axes along which ray r of the packet goes backwards: bit 0 for x, 1 for y, 2 for z} */
+    private static int negativeAxes(Query query, int r) {
+        return (query.dx[r] < 0 ? 1 : 0) | (query.dy[r] < 0 ? 2 : 0) | (query.dz[r] < 0 ? 4 : 0);
+    }
+
+    /** The first unblocked ray of rays [from, to] that meets a node's box, n when none does or the pyramid misses it. */
+    private int packetMeets(Query query, int node, int from, int to) {
+        return query.frustum.meetsBox(nodeBounds, 6 * node) ? firstRayMeeting(query, node, from, to) : query.packetSize;
+    }
+
+    /** The first unblocked ray of rays [from, to] that meets a node's box, or the packet's size when none does. */
+    private int firstRayMeeting(Query query, int node, int from, int to) {
+        for (int r = from; r <= to; ++r)
+            if (query.ktrs[r] > 0 && rayMeets(query, r, node))
                 return r;
-        return n;
+        return query.packetSize;
     }
 
-    /** Whether ray r of the packet meets a node's box before its distance. */
-    private boolean rayMeets(Query query, int node, int r) {
-        double ix = query.ix[r];
-        double iy = query.iy[r];
-        double iz = query.iz[r];
-        return boxHit(node, query.ox[r], query.oy[r], query.oz[r], ix, iy, iz, ix < 0 ? 3 : 0, iy < 0 ? 3 : 0,
-                iz < 0 ? 3 : 0, query.maxTs[r]);
+    /** The last unblocked ray of rays (from, to] that meets an inner node's box, else from; to for a leaf. */
+    private int lastRayMeeting(Query query, int node, int from, int to) {
+        if (nodeLinks[2 * node + 1] >= 0)
+            return to;
+        for (int r = to; r > from; --r)
+            if (query.ktrs[r] > 0 && rayMeets(query, r, node))
+                return r;
+        return from;
     }
 
     /**
-     * Tests a leaf's bodies on every unblocked ray from the first that meets the leaf's box on.
+     * Lists in {@link Query#rays} ray first and the unblocked rays after it up to ray last that meet a
+     * leaf's box, in order.
      *
+     * @return the list's length
+     */
+    private int raysMeeting(Query query, int node, int first, int last) {
+        int[] rays = query.rays;
+        int count = 0;
+        rays[count++] = first;
+        for (int r = first + 1; r <= last; ++r)
+            if (query.ktrs[r] > 0 && rayMeets(query, r, node))
+                rays[count++] = r;
+        return count;
+    }
+
+    /** Whether ray r of the packet meets a node's box before its distance, by {@link #slabsMeet}. */
+    private boolean rayMeets(Query query, int r, int node) {
+        double[] box = nodeBounds;
+        int b = 6 * node;
+        return slabsMeet(box[b], box[b + 1], box[b + 2], box[b + 3], box[b + 4], box[b + 5], query.ox[r], query.oy[r],
+                query.oz[r], query.ix[r], query.iy[r], query.iz[r], query.maxTs[r]);
+    }
+
+    /**
+     * Whether a ray meets a box [x0, x1] × [y0, y1] × [z0, z1] between its start and maxT: the test of
+     * {@link #boxHit} on the same numbers, its near faces chosen among the box's numbers (which stay
+     * the same through a scan of the packet's rays) rather than by their place in the array. Small
+     * enough for the JIT to inline.
+     *
+     * @param ix the inverse of the ray's direction, x
+     * @param iy the same for y
+     * @param iz the same for z
+     */
+    private static boolean slabsMeet(double x0, double y0, double z0, double x1, double y1, double z1, double ox,
+                                     double oy, double oz, double ix, double iy, double iz, double maxT) {
+        double near = ((ix < 0 ? x1 : x0) - ox) * ix;
+        double far = ((ix < 0 ? x0 : x1) - ox) * ix;
+        near = near > 0 ? near : 0;
+        far = far < maxT ? far : maxT;
+        double lo = ((iy < 0 ? y1 : y0) - oy) * iy;
+        double hi = ((iy < 0 ? y0 : y1) - oy) * iy;
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        lo = ((iz < 0 ? z1 : z0) - oz) * iz;
+        hi = ((iz < 0 ? z0 : z1) - oz) * iz;
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        return near <= far;
+    }
+
+    /**
+     * Tests a leaf's bodies on the rays listed in {@link Query#rays}, all of which meet its box: body
+     * after body, each on the rays not blocked yet, so each ray meets the bodies in their order and
+     * stops at the body that blocks it, as alone. The list keeps the rays still unblocked.
+     *
+     * @param firstBody the leaf's first body
+     * @param bodies    its body count
+     * @param count     the list's length
      * @return the number of rays the leaf blocked
      */
-    private int leafOnPacket(Query query, int node, int firstBody, int count, int first, double minK) {
-        int blocked = 0;
-        for (int r = first; r < query.packetSize; ++r) {
-            if (!(query.ktrs[r] > 0) || r != first && !rayMeets(query, node, r))
-                continue;
-            query.maxT = query.maxTs[r];
-            query.ktr = query.ktrs[r];
-            boolean through = true;
-            for (int b = firstBody; b < firstBody + count && through; ++b)
-                through = visitBody(b, query, query.ox[r], query.oy[r], query.oz[r], query.dx[r], query.dy[r],
-                        query.dz[r], true, minK);
-            query.ktrs[r] = through ? query.ktr : 0;
-            if (!through)
-                ++blocked;
+    private int leafOnPacket(Query query, int firstBody, int bodies, int count, double minK) {
+        int left = count;
+        for (int b = firstBody; b < firstBody + bodies && left > 0; ++b) {
+            int part = bodyPart[b];
+            Geometry owner = owners[bodyOwner[b]];
+            left = part < 0 ? bodyOnPacket(query, owner, left, minK)
+                    : triangleOnPacket(query, (TriangleMesh) owner, part, left, minK);
         }
-        return blocked;
+        return count - left;
+    }
+
+    /**
+     * Tests a body (not a mesh's triangle) on the rays listed in {@link Query#rays} through its own
+     * {@link Geometry#transmittance}, keeping those it does not block.
+     *
+     * @param count the list's length
+     * @return the number of rays kept
+     */
+    private static int bodyOnPacket(Query query, Geometry body, int count, double minK) {
+        int[] rays = query.rays;
+        int kept = 0;
+        for (int i = 0; i < count; ++i) {
+            int r = rays[i];
+            if (dimRay(query, r, body.transmittance(query.ox[r], query.oy[r], query.oz[r], query.dx[r], query.dy[r],
+                    query.dz[r], query.maxTs[r]), minK))
+                rays[kept++] = r;
+        }
+        return kept;
+    }
+
+    /**
+     * Tests a mesh's triangle on the rays listed in {@link Query#rays}, its data read once from the
+     * mesh, keeping the rays it does not block: a ray it meets is dimmed by the mesh's {@code kT}.
+     *
+     * @param part  the triangle in its mesh
+     * @param count the list's length
+     * @return the number of rays kept
+     */
+    private static int triangleOnPacket(Query query, TriangleMesh mesh, int part, int count, double minK) {
+        double[] data = query.triangle;
+        mesh.triangleData(part, data);
+        double p1x = data[0];
+        double p1y = data[1];
+        double p1z = data[2];
+        double e1x = data[3];
+        double e1y = data[4];
+        double e1z = data[5];
+        double e2x = data[6];
+        double e2y = data[7];
+        double e2z = data[8];
+        double limit = data[9];
+        double kT = mesh.getMaterial().getKt();
+        int[] rays = query.rays;
+        int kept = 0;
+        for (int i = 0; i < count; ++i) {
+            int r = rays[i];
+            if (Triangle.intersect(p1x, p1y, p1z, e1x, e1y, e1z, e2x, e2y, e2z, limit, query.ox[r], query.oy[r],
+                    query.oz[r], query.dx[r], query.dy[r], query.dz[r], query.maxTs[r]) == Geometry.NO_HIT
+                    || dimRay(query, r, kT, minK))
+                rays[kept++] = r;
+        }
+        return kept;
+    }
+
+    /** Multiplies ray r's transparency by a factor, as {@link #dim}; false (its transparency 0) once it is blocked. */
+    private static boolean dimRay(Query query, int r, double factor, double minK) {
+        double ktr = query.ktrs[r] * factor;
+        boolean through = ktr > 0 && ktr >= minK;
+        query.ktrs[r] = through ? ktr : 0;
+        return through;
     }
 
     /** Multiplies a transparency by the {@code kT} of every hit of the intersectables that are not geometries. */

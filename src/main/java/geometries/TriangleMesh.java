@@ -26,6 +26,8 @@ import static primitives.Util.requireNonNull;
  * knows its triangle, so {@link GeoPoint#getNormal()} gives that triangle's normal.
  */
 public final class TriangleMesh extends Geometry {
+    /** The number of doubles of a triangle's data for {@link #triangleData}. */
+    static final int TRIANGLE_DATA = 10;
     /** The tolerance, relative to a triangle's longest edge, of a point on it (see {@link #getNormal(Point3D)}). */
     private static final double ON_TRIANGLE_TOLERANCE = 1e-9;
 
@@ -406,6 +408,26 @@ public final class TriangleMesh extends Geometry {
         return Triangle.intersect(p1x, p1y, p1z, vertices[b] - p1x, vertices[b + 1] - p1y, vertices[b + 2] - p1z,
                 vertices[c] - p1x, vertices[c + 1] - p1y, vertices[c + 2] - p1z, parallelLimits[t],
                 ox, oy, oz, dx, dy, dz, maxT);
+    }
+
+    /**
+     * Writes the data of one triangle's test ({@link Triangle#intersect}) into an array: its first vertex
+     * p1, its edges e1 = p2 − p1 and e2 = p3 − p1 and its parallel limit, the numbers
+     * {@link #triangleHit} tests, for testing the triangle on many rays.
+     *
+     * @param t      the triangle's index
+     * @param target the array, of {@value #TRIANGLE_DATA} doubles or more
+     */
+    void triangleData(int t, double[] target) {
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
+        for (int k = 0; k < 3; ++k) {
+            target[k] = vertices[a + k];
+            target[3 + k] = vertices[b + k] - vertices[a + k];
+            target[6 + k] = vertices[c + k] - vertices[a + k];
+        }
+        target[9] = parallelLimits[t];
     }
 
     /**

@@ -308,6 +308,56 @@ class TriangleMeshTest {
     }
 
     /**
+     * Test method for {@link TriangleMesh#triangleData}: a triangle's data for testing it on many rays
+     * is its first vertex, its two edges from it and its parallel limit, the numbers its own test uses.
+     */
+    @Test
+    void testTriangleData() {
+        TriangleMesh mesh = benchmark.SphereMesh.mesh(new Point3D(1, -2, 3), 5, 6, 8);
+        double[] data = new double[TriangleMesh.TRIANGLE_DATA + 1];
+        data[TriangleMesh.TRIANGLE_DATA] = -7;
+        Random rnd = new Random(1610);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: every triangle: p1 its first vertex, e1 = p2 − p1, e2 = p3 − p1, and the Triangle's
+        // parallel limit of those edges
+        for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
+            mesh.triangleData(t, data);
+            Point3D p1 = mesh.getVertex(mesh.getVertexIndex(t, 0));
+            Vector e1 = mesh.getVertex(mesh.getVertexIndex(t, 1)).subtract(p1);
+            Vector e2 = mesh.getVertex(mesh.getVertexIndex(t, 2)).subtract(p1);
+            double[] expected = { p1.getX(), p1.getY(), p1.getZ(), e1.getX(), e1.getY(), e1.getZ(), e2.getX(),
+                    e2.getY(), e2.getZ(), Triangle.parallelLimit(e1.getX(), e1.getY(), e1.getZ(), e2.getX(), e2.getY(),
+                    e2.getZ()) };
+            for (int k = 0; k < expected.length; ++k)
+                assertEquals(expected[k], data[k], 1e-15, "TC01: triangle " + t + ", number " + k);
+        }
+        // TC02: 500 random rays at points in and around random triangles: the Möller–Trumbore test on
+        // the data gives the triangle's own distance, to the bit, hit or miss
+        int hits = 0;
+        for (int r = 0; r < 500; ++r) {
+            int t = rnd.nextInt(mesh.getTrianglesCount());
+            mesh.triangleData(t, data);
+            double u = 1.4 * rnd.nextDouble() - 0.2;
+            double v = 1.4 * rnd.nextDouble() - 0.2;
+            Point3D target = new Point3D(data[0] + u * data[3] + v * data[6], data[1] + u * data[4] + v * data[7],
+                    data[2] + u * data[5] + v * data[8]);
+            Point3D o = randomPoint(rnd, new Point3D(1, -2, 3), 12);
+            Vector d = target.subtract(o).normalize();
+            double maxT = 30 * rnd.nextDouble();
+            double expected = mesh.triangleHit(t, o.getX(), o.getY(), o.getZ(), d.getX(), d.getY(), d.getZ(), maxT);
+            assertEquals(expected, Triangle.intersect(data, 0, o.getX(), o.getY(), o.getZ(), d.getX(), d.getY(),
+                    d.getZ(), maxT), 0, "TC02: ray " + r + " at triangle " + t);
+            if (expected < Geometry.NO_HIT)
+                ++hits;
+        }
+        assertTrue(hits > 50 && hits < 450, "TC02: too few hits or misses (" + hits + " hits)");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the array's numbers past the data are left as they were (−7)
+        assertEquals(-7, data[TriangleMesh.TRIANGLE_DATA], 0, "TC11: a number past the data must be left alone");
+    }
+
+    /**
      * Test method for {@link TriangleMesh}: a sphere's mesh and the same triangles as {@link Triangle}
      * objects give the same hits and normals on the course's queries, and on the renderer's path
      * through the hierarchy and through the brute-force scan.
