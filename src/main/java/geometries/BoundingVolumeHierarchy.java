@@ -53,6 +53,11 @@ public final class BoundingVolumeHierarchy {
             Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
+    /**
+     * The numbers a gathered mesh triangle keeps for the bundle's rays: the ten of its test (see
+     * {@link TriangleMesh#triangleData}) and its mesh's {@code kT}.
+     */
+    private static final int GATHERED_TRIANGLE = 11;
 
     /** The name of the threads that share the build's work. */
     private static final String BUILD_THREADS = "hierarchy-build";
@@ -107,10 +112,13 @@ public final class BoundingVolumeHierarchy {
         private int part;
         private double ktr;
         private final ShadowFrustum frustum = new ShadowFrustum();
-        /** A body's box, computed for {@link #bodyMeets}. */
-        private final double[] box = new double[6];
-        /** The tree's bodies {@link #gather} found, and how many: -1 when they were too many. */
+        /**
+         * The tree's bodies {@link #gather} found, and how many: -1 when they were too many. A mesh's
+         * triangle is −1 here, its numbers in {@link #gatheredTriangles}.
+         */
         private final int[] gathered = new int[MAX_GATHERED];
+        /** Per body {@link #gather} found that is a mesh's triangle, at its place: its {@value #GATHERED_TRIANGLE} numbers. */
+        private final double[] gatheredTriangles = new double[GATHERED_TRIANGLE * MAX_GATHERED];
         private int gatheredCount;
         /** When {@link #gather} found too many bodies: the node below which all of them lie. */
         private int subtree;
@@ -501,13 +509,25 @@ public final class BoundingVolumeHierarchy {
         }
     }
 
-    /** Adds a leaf's bodies that may meet the frustum ({@link #bodyMeets}); false when there is no room for them. */
+    /**
+     * Adds a leaf's bodies that may meet the frustum ({@link #bodyMeets}), a mesh's triangle with the
+     * numbers of its test; false when there is no room for them.
+     */
     private boolean gatherLeaf(Query query, int first, int count) {
         for (int b = first; b < first + count; ++b)
             if (bodyMeets(query, b)) {
-                if (query.gatheredCount == MAX_GATHERED)
+                int slot = query.gatheredCount;
+                if (slot == MAX_GATHERED)
                     return false;
-                query.gathered[query.gatheredCount++] = b;
+                int part = bodyPart[b];
+                if (part >= 0) {
+                    TriangleMesh mesh = (TriangleMesh) owners[bodyOwner[b]];
+                    int d = GATHERED_TRIANGLE * slot;
+                    mesh.triangleData(part, query.gatheredTriangles, d);
+                    query.gatheredTriangles[d + 10] = mesh.getMaterial().getKt();
+                }
+                query.gathered[slot] = part >= 0 ? -1 : b;
+                query.gatheredCount = slot + 1;
             }
         return true;
     }
@@ -526,9 +546,7 @@ public final class BoundingVolumeHierarchy {
         ShadowFrustum frustum = query.frustum;
         if (part < 0)
             return frustum.meetsBox(wholeBounds, 6 * (-1 - part)) && owners[bodyOwner[b]].mayMeet(frustum);
-        for (int k = 0; k < 6; ++k)
-            query.box[k] = triangleBounds[6 * b + k];
-        return frustum.meetsBox(query.box, 0) && ((TriangleMesh) owners[bodyOwner[b]]).mayMeet(part, frustum);
+        return frustum.meetsBox(triangleBounds, 6 * b) && ((TriangleMesh) owners[bodyOwner[b]]).mayMeet(part, frustum);
     }
 
     /**
@@ -575,7 +593,7 @@ public final class BoundingVolumeHierarchy {
                 return 0;
         } else
             for (int i = 0; i < query.gatheredCount; ++i)
-                if (!visitBody(query.gathered[i], query, ox, oy, oz, dx, dy, dz, true, minK))
+                if (!visitGathered(query, i, ox, oy, oz, dx, dy, dz, minK))
                     return 0;
         return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
     }
@@ -806,6 +824,21 @@ public final class BoundingVolumeHierarchy {
                 return true;
             node = stack[--top];
         }
+    }
+
+    /**
+     * {@link #visitBody} in a transmittance walk for the body at a place of the query's gathered ones:
+     * a mesh's triangle is tested on the numbers {@link #gatherLeaf} kept, the same as the mesh's.
+     */
+    private boolean visitGathered(Query query, int i, double ox, double oy, double oz, double dx, double dy,
+                                  double dz, double minK) {
+        int b = query.gathered[i];
+        if (b >= 0)
+            return visit(owners[bodyOwner[b]], query, ox, oy, oz, dx, dy, dz, true, minK);
+        double[] data = query.gatheredTriangles;
+        int d = GATHERED_TRIANGLE * i;
+        return Triangle.intersect(data, d, ox, oy, oz, dx, dy, dz, query.maxT) == Geometry.NO_HIT
+                || dim(query, data[d + 10], minK);
     }
 
     /** {@link #visit} for body b of the tree. */
