@@ -451,7 +451,8 @@ public final class BoundingVolumeHierarchy {
      * Gathers the bodies a bundle of shadow rays may meet, for {@link #gatheredTransmittance}: the
      * unbounded bodies and the tree's bodies that may meet the query's
      * {@link Query#getFrustum() frustum} (set it first): the planes of unbounded ones and of
-     * polygons must cross it, and the boxes of bounded ones meet it. When more than a few of the tree's
+     * polygons must cross it, a triangle must not lie outside one of its faces, and the boxes of
+     * bounded ones must meet it. When more than a few of the tree's
      * bodies meet it, their smallest subtree is kept instead. A brute-force {@link #scan} gathers
      * every body.
      *
