@@ -55,6 +55,11 @@ public final class BoundingVolumeHierarchy {
     private static final double MISSED = -1;
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
+    /**
+     * The numbers a gathered mesh triangle keeps for the bundle's rays: the ten of its test (see
+     * {@link TriangleMesh#triangleData}) and its mesh's {@code kT}.
+     */
+    private static final int GATHERED_TRIANGLE = 11;
 
     /** The name of the threads that share the build's work. */
     private static final String BUILD_THREADS = "hierarchy-build";
@@ -111,10 +116,13 @@ public final class BoundingVolumeHierarchy {
         private int part;
         private double ktr;
         private final ShadowFrustum frustum = new ShadowFrustum();
-        /** A body's box, computed for {@link #bodyMeets}. */
-        private final double[] box = new double[6];
-        /** The tree's bodies {@link #gather} found, and how many: -1 when they were too many. */
+        /**
+         * The tree's bodies {@link #gather} found, and how many: -1 when they were too many. A mesh's
+         * triangle is −1 here, its numbers in {@link #gatheredTriangles}.
+         */
         private final int[] gathered = new int[MAX_GATHERED];
+        /** Per body {@link #gather} found that is a mesh's triangle, at its place: its {@value #GATHERED_TRIANGLE} numbers. */
+        private final double[] gatheredTriangles = new double[GATHERED_TRIANGLE * MAX_GATHERED];
         private int gatheredCount;
         /** When {@link #gather} found too many bodies: the node below which all of them lie. */
         private int subtree;
@@ -455,7 +463,8 @@ public final class BoundingVolumeHierarchy {
      * Gathers the bodies a bundle of shadow rays may meet, for {@link #gatheredTransmittance}: the
      * unbounded bodies and the tree's bodies that may meet the query's
      * {@link Query#getFrustum() frustum} (set it first): the planes of unbounded ones and of
-     * polygons must cross it, and the boxes of bounded ones meet it. When more than a few of the tree's
+     * polygons must cross it, a triangle must not lie outside one of its faces, and the boxes of
+     * bounded ones must meet it. When more than a few of the tree's
      * bodies meet it, their smallest subtree is kept instead. A brute-force {@link #scan} gathers
      * every body.
      *
@@ -513,13 +522,25 @@ public final class BoundingVolumeHierarchy {
         }
     }
 
-    /** Adds a leaf's bodies that may meet the frustum ({@link #bodyMeets}); false when there is no room for them. */
+    /**
+     * Adds a leaf's bodies that may meet the frustum ({@link #bodyMeets}), a mesh's triangle with the
+     * numbers of its test; false when there is no room for them.
+     */
     private boolean gatherLeaf(Query query, int first, int count) {
         for (int b = first; b < first + count; ++b)
             if (bodyMeets(query, b)) {
-                if (query.gatheredCount == MAX_GATHERED)
+                int slot = query.gatheredCount;
+                if (slot == MAX_GATHERED)
                     return false;
-                query.gathered[query.gatheredCount++] = b;
+                int part = bodyPart[b];
+                if (part >= 0) {
+                    TriangleMesh mesh = (TriangleMesh) owners[bodyOwner[b]];
+                    int d = GATHERED_TRIANGLE * slot;
+                    mesh.triangleData(part, query.gatheredTriangles, d);
+                    query.gatheredTriangles[d + 10] = mesh.getMaterial().getKt();
+                }
+                query.gathered[slot] = part >= 0 ? -1 : b;
+                query.gatheredCount = slot + 1;
             }
         return true;
     }
@@ -538,9 +559,7 @@ public final class BoundingVolumeHierarchy {
         ShadowFrustum frustum = query.frustum;
         if (part < 0)
             return frustum.meetsBox(wholeBounds, 6 * (-1 - part)) && owners[bodyOwner[b]].mayMeet(frustum);
-        for (int k = 0; k < 6; ++k)
-            query.box[k] = triangleBounds[6 * b + k];
-        return frustum.meetsBox(query.box, 0) && ((TriangleMesh) owners[bodyOwner[b]]).mayMeet(part, frustum);
+        return frustum.meetsBox(triangleBounds, 6 * b) && ((TriangleMesh) owners[bodyOwner[b]]).mayMeet(part, frustum);
     }
 
     /**
@@ -587,7 +606,7 @@ public final class BoundingVolumeHierarchy {
                 return 0;
         } else
             for (int i = 0; i < query.gatheredCount; ++i)
-                if (!visitBody(query.gathered[i], query, ox, oy, oz, dx, dy, dz, true, minK))
+                if (!visitGathered(query, i, ox, oy, oz, dx, dy, dz, minK))
                     return 0;
         return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
     }
@@ -954,6 +973,21 @@ public final class BoundingVolumeHierarchy {
                 node = stack[--top];
             } while (entries[top] > query.maxT);
         }
+    }
+
+    /**
+     * {@link #visitBody} in a transmittance walk for the body at a place of the query's gathered ones:
+     * a mesh's triangle is tested on the numbers {@link #gatherLeaf} kept, the same as the mesh's.
+     */
+    private boolean visitGathered(Query query, int i, double ox, double oy, double oz, double dx, double dy,
+                                  double dz, double minK) {
+        int b = query.gathered[i];
+        if (b >= 0)
+            return visit(owners[bodyOwner[b]], query, ox, oy, oz, dx, dy, dz, true, minK);
+        double[] data = query.gatheredTriangles;
+        int d = GATHERED_TRIANGLE * i;
+        return Triangle.intersect(data, d, ox, oy, oz, dx, dy, dz, query.maxT) == Geometry.NO_HIT
+                || dim(query, data[d + 10], minK);
     }
 
     /** {@link #visit} for body b of the tree. */

@@ -154,12 +154,30 @@ public final class ShadowFrustum {
      *         (never after a refused {@link #set})
      */
     public boolean meetsBox(double[] boxes, int offset) {
+        return meetsBox(boxes[offset], boxes[offset + 1], boxes[offset + 2], boxes[offset + 3], boxes[offset + 4],
+                boxes[offset + 5]);
+    }
+
+    /**
+     * {@link #meetsBox(double[], int)} for a box kept in floats.
+     *
+     * @param boxes  an array of boxes, {minX, minY, minZ, maxX, maxY, maxZ} each
+     * @param offset where the box starts in the array
+     * @return false only when the box lies outside the pyramid by more than the thickness and margin
+     *         (never after a refused {@link #set})
+     */
+    public boolean meetsBox(float[] boxes, int offset) {
+        return meetsBox(boxes[offset], boxes[offset + 1], boxes[offset + 2], boxes[offset + 3], boxes[offset + 4],
+                boxes[offset + 5]);
+    }
+
+    /** Whether the box from (x0, y0, z0) to (x1, y1, z1) may meet the pyramid, see {@link #meetsBox(double[], int)}. */
+    private boolean meetsBox(double x0, double y0, double z0, double x1, double y1, double z1) {
         if (!valid)
             return true;
         double m = margin;
         double[] h = hull;
-        if (boxes[offset] > h[3] + m || boxes[offset + 1] > h[4] + m || boxes[offset + 2] > h[5] + m
-                || boxes[offset + 3] < h[0] - m || boxes[offset + 4] < h[1] - m || boxes[offset + 5] < h[2] - m)
+        if (x0 > h[3] + m || y0 > h[4] + m || z0 > h[5] + m || x1 < h[0] - m || y1 < h[1] - m || z1 < h[2] - m)
             return false;
         double[] pl = planes;
         for (int p = 0; p < 4 * PLANES; p += 4) {
@@ -167,13 +185,53 @@ public final class ShadowFrustum {
             double ny = pl[p + 1];
             double nz = pl[p + 2];
             // the box's corner farthest inside the plane
-            double x = nx > 0 ? boxes[offset] : boxes[offset + 3];
-            double y = ny > 0 ? boxes[offset + 1] : boxes[offset + 4];
-            double z = nz > 0 ? boxes[offset + 2] : boxes[offset + 5];
+            double x = nx > 0 ? x0 : x1;
+            double y = ny > 0 ? y0 : y1;
+            double z = nz > 0 ? z0 : z1;
             if (nx * x + ny * y + nz * z - pl[p + 3] > m)
                 return false;
         }
         return true;
+    }
+
+    /**
+     * Whether a triangle, as the renderer's closed test takes it (grown by {@link Triangle}'s
+     * barycentric tolerance: each vertex p moved by τ·((p − q) + (p − r)), q and r the other two),
+     * may meet the pyramid. It is set aside when its three grown vertices lie outside one face of the
+     * pyramid (a side or the base) by more than the thickness and margin: the triangle, their convex
+     * hull, then lies outside it too.
+     *
+     * @param vertices the coordinates of the vertices, three doubles each
+     * @param p1       where the first vertex's x lies in vertices
+     * @param p2       where the second vertex's x lies
+     * @param p3       where the third vertex's x lies
+     * @return false only when no ray of the bundle can meet the triangle (never after a refused
+     *         {@link #set})
+     */
+    public boolean meetsTriangle(double[] vertices, int p1, int p2, int p3) {
+        if (!valid)
+            return true;
+        double[] pl = planes;
+        for (int p = 0; p < 4 * PLANES; p += 4)
+            if (outside(pl[p], pl[p + 1], pl[p + 2], pl[p + 3], vertices, p1, p2, p3))
+                return false;
+        return true;
+    }
+
+    /**
+     * Whether the three grown vertices of a triangle (see {@link #meetsTriangle}) lie outside a face
+     * n·x = offset by more than the margin. A grown vertex's distance follows from the vertices'
+     * distances, the distance being affine.
+     */
+    private boolean outside(double nx, double ny, double nz, double offset, double[] vertices, int p1, int p2,
+                            int p3) {
+        double d1 = nx * vertices[p1] + ny * vertices[p1 + 1] + nz * vertices[p1 + 2] - offset;
+        double d2 = nx * vertices[p2] + ny * vertices[p2 + 1] + nz * vertices[p2 + 2] - offset;
+        double d3 = nx * vertices[p3] + ny * vertices[p3 + 1] + nz * vertices[p3 + 2] - offset;
+        double tau = Triangle.BARYCENTRIC_TOLERANCE;
+        double m = margin;
+        return d1 + tau * ((d1 - d2) + (d1 - d3)) > m && d2 + tau * ((d2 - d1) + (d2 - d3)) > m
+                && d3 + tau * ((d3 - d1) + (d3 - d2)) > m;
     }
 
     /**

@@ -13,7 +13,7 @@ import static primitives.Util.alignZero;
  */
 public class Triangle extends Polygon {
     /** Tolerance on the barycentric coordinates, so that neighbours sharing an edge leave no seam. */
-    private static final double BARYCENTRIC_TOLERANCE = 1e-9;
+    static final double BARYCENTRIC_TOLERANCE = 1e-9;
 
     /**
      * The data of the intersection test: the first vertex p1, the edges e1 = p2 − p1 and
@@ -116,6 +116,15 @@ public class Triangle extends Polygon {
         if (v < -BARYCENTRIC_TOLERANCE || u + v > 1 + BARYCENTRIC_TOLERANCE)
             return NO_HIT;
         return hitWithin(alignZero((e2x * qx + e2y * qy + e2z * qz) * inv), maxT);
+    }
+
+    /**
+     * A triangle can meet a bundle only when its plane does and it is not outside a face of the
+     * bundle's pyramid ({@link ShadowFrustum#meetsTriangle}).
+     */
+    @Override
+    boolean mayMeet(ShadowFrustum frustum) {
+        return super.mayMeet(frustum) && frustum.meetsTriangle(vertexCoordinates, 0, 3, 6);
     }
 
     /**

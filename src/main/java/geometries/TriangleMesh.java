@@ -442,8 +442,9 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
-     * Whether triangle t may meet any ray of a shadow bundle: a triangle lies in its plane, so only
-     * when the plane does (as {@link Polygon}'s test). Reads the mesh's arrays, allocates nothing.
+     * Whether triangle t may meet any ray of a shadow bundle: only when its plane does (as
+     * {@link Polygon}'s test) and the triangle itself is not outside a face of the pyramid
+     * ({@link ShadowFrustum#meetsTriangle}). Reads the mesh's arrays, allocates nothing.
      *
      * @param t       the triangle's index
      * @param frustum the pyramid the bundle sweeps
@@ -464,7 +465,29 @@ public final class TriangleMesh extends Geometry {
         double nz = ux * vy - uy * vx;
         double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
         return frustum.meetsPlane(nx / length, ny / length, nz / length, vertices[a], vertices[a + 1],
-                vertices[a + 2]);
+                vertices[a + 2]) && frustum.meetsTriangle(vertices, a, b, c);
+    }
+
+    /**
+     * Writes the data of triangle t's test into an array, as a {@link Triangle} keeps them: the first
+     * vertex p1, the edges p2 − p1 and p3 − p1, and the parallel limit, so that
+     * {@link Triangle#intersect(double[], int, double, double, double, double, double, double, double)}
+     * on them gives exactly {@link #triangleHit}.
+     *
+     * @param t      the triangle's index
+     * @param target the array
+     * @param offset where the ten numbers go
+     */
+    void triangleData(int t, double[] target, int offset) {
+        int a = corner(t, 0);
+        int b = corner(t, 1);
+        int c = corner(t, 2);
+        for (int k = 0; k < 3; ++k) {
+            target[offset + k] = vertices[a + k];
+            target[offset + 3 + k] = vertices[b + k] - vertices[a + k];
+            target[offset + 6 + k] = vertices[c + k] - vertices[a + k];
+        }
+        target[offset + 9] = parallelLimits[t];
     }
 
     /** {@return where vertex k (0, 1 or 2) of triangle t lies in the vertices' array: the place of its x} */

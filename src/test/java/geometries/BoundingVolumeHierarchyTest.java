@@ -1319,7 +1319,8 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
-     * How many of a composite's bounded bodies have boxes the frustum meets, or also pass their own test.
+     * How many of a composite's bounded bodies have boxes the frustum meets, or also pass their own test
+     * ({@link TriangleMesh#mayMeet(int, ShadowFrustum)} for each triangle of a mesh, a body each).
      *
      * @param item    the composite or body
      * @param frustum the frustum, set
@@ -1331,6 +1332,15 @@ class BoundingVolumeHierarchyTest {
             int count = 0;
             for (Intersectable child : composite.getGeometries())
                 count += meeting(child, frustum, ownTest);
+            return count;
+        }
+        if (item instanceof TriangleMesh mesh) {
+            int count = 0;
+            double[] box = new double[6];
+            for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
+                mesh.bounds(t, box, 0);
+                count += frustum.meetsBox(box, 0) && (!ownTest || mesh.mayMeet(t, frustum)) ? 1 : 0;
+            }
             return count;
         }
         if (item instanceof Geometry geometry) {
@@ -1527,11 +1537,28 @@ class BoundingVolumeHierarchyTest {
      * @return the scene
      */
     private static TestScene meshScene(Random rnd) {
+        return meshScene(rnd, false);
+    }
+
+    /**
+     * The dense mesh scene of {@link #meshScene(Random)}, its sphere's triangles as {@link Triangle}s or
+     * as one {@link TriangleMesh} (the scene's bodies to start bundles on are the triangles all the same).
+     *
+     * @param rnd    the generator
+     * @param asMesh whether the sphere is a {@link TriangleMesh}
+     * @return the scene
+     */
+    private static TestScene meshScene(Random rnd, boolean asMesh) {
         List<Intersectable> bodies = new ArrayList<>(benchmark.SphereMesh.triangles(Point3D.ZERO, 6, 16, 32));
-        for (int i = 0; i < 6; ++i)
-            bodies.add(new Sphere(Point3D.ZERO.add(randomUnit(rnd).scale(8 + rnd.nextDouble())), 0.3 + rnd.nextDouble()));
-        bodies.add(new Plane(new Point3D(0, -7, 0), new Vector(0, 1, 0)));
-        return new TestScene(new Geometries(bodies.toArray(new Intersectable[0])), bodies, 8);
+        Geometries geometries = asMesh ? new Geometries(benchmark.SphereMesh.mesh(Point3D.ZERO, 6, 16, 32))
+                : new Geometries(bodies.toArray(new Intersectable[0]));
+        for (int i = 0; i < 7; ++i) {
+            Geometry body = i < 6 ? new Sphere(Point3D.ZERO.add(randomUnit(rnd).scale(8 + rnd.nextDouble())),
+                    0.3 + rnd.nextDouble()) : new Plane(new Point3D(0, -7, 0), new Vector(0, 1, 0));
+            bodies.add(body);
+            geometries.add(body);
+        }
+        return new TestScene(geometries, bodies, 8);
     }
 
     /**
@@ -1555,7 +1582,6 @@ class BoundingVolumeHierarchyTest {
         for (int m = 0; m < 2; ++m)
             checkBundles(rnd, meshScene(rnd), true, 1, opaque, "TC01: mesh scene " + m);
         assertCounts(opaque, "TC01");
-
         // TC02: the same with random kT (0.5, 0.9, 0.25, 1, some opaque), the hierarchy built on 3
         // threads: equal within 1e-12, one by one and as a packet
         double[] kts = { 0.5, 0.9, 0.25, 1, 0.75, 0.999, 0.5, 0.9, 0 };
@@ -1567,6 +1593,18 @@ class BoundingVolumeHierarchyTest {
             checkBundles(rnd, scene, false, 3, transparent, "TC02: " + (s < 0 ? "mesh scene" : "scene " + s));
         }
         assertCounts(transparent, "TC02");
+
+        // TC03: the dense mesh as one TriangleMesh, whose gathered triangles are tested from their own
+        // copies of the mesh's numbers: the same answers, opaque and with random kT
+        GatherCounts mesh = new GatherCounts();
+        for (int m = 0; m < 6; ++m) {
+            TestScene scene = meshScene(rnd, true);
+            if (m % 2 == 1)
+                setKt(scene.geometries(), kts, rnd);
+            checkBundles(rnd, scene, m % 2 == 0, 1 + m % 3, mesh, "TC03: TriangleMesh scene " + m);
+        }
+        assertTrue(mesh.few >= 50 && mesh.subtree >= 20 && mesh.none >= 20, "TC03: too few bundles of each kind ("
+                + mesh.none + " none, " + mesh.few + " few, " + mesh.subtree + " subtrees)");
     }
 
     /**

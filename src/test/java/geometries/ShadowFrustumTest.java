@@ -62,6 +62,38 @@ class ShadowFrustumTest {
         return frustum.meetsBox(boxes, 6);
     }
 
+    /**
+     * Whether the frustum may meet a triangle; the vertices are placed after a dummy vertex (at the
+     * apex), the third first, so the places are used.
+     *
+     * @param frustum the frustum
+     * @param v       the vertices p1, p2, p3, three coordinates each
+     * @return the frustum's answer
+     */
+    private static boolean meetsTriangle(ShadowFrustum frustum, double... v) {
+        double[] vertices = { 0, 0, 0, v[6], v[7], v[8], v[0], v[1], v[2], v[3], v[4], v[5] };
+        return frustum.meetsTriangle(vertices, 6, 9, 3);
+    }
+
+    /**
+     * Whether the frustum may meet a box kept in floats (the box rounded outward to floats), placed
+     * after a dummy box in the array.
+     *
+     * @param frustum the frustum
+     * @param box     {minX, minY, minZ, maxX, maxY, maxZ}
+     * @return the frustum's answer
+     */
+    private static boolean meetsFloats(ShadowFrustum frustum, double... box) {
+        float[] boxes = { -1, -1, -1, 1, 1, 1, 0, 0, 0, 0, 0, 0 };
+        for (int k = 0; k < 3; ++k) {
+            float low = (float) box[k];
+            float high = (float) box[3 + k];
+            boxes[6 + k] = low > box[k] ? Math.nextDown(low) : low;
+            boxes[9 + k] = high < box[3 + k] ? Math.nextUp(high) : high;
+        }
+        return frustum.meetsBox(boxes, 6);
+    }
+
     /** Test method for {@link ShadowFrustum#set}. */
     @Test
     void testSet() {
@@ -167,6 +199,90 @@ class ShadowFrustumTest {
         // TC19: a margin of 2.8e-6 in the standard pyramid: a box 2e-6 behind the apex is met, 5e-6 behind it not
         assertTrue(meets(frustum, -1, -1, -1, 1, 1, -2e-6), "TC19: within the margin behind the apex");
         assertFalse(meets(frustum, -1, -1, -1, 1, 1, -5e-6), "TC19: beyond the margin (" + MARGIN + ") behind the apex");
+    }
+
+    /** Test method for {@link ShadowFrustum#meetsBox(float[], int)}: the same answers as in doubles. */
+    @Test
+    void testMeetsBoxInFloats() {
+        ShadowFrustum frustum = standard();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a box inside the pyramid: true
+        assertTrue(meetsFloats(frustum, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC01: a box inside the pyramid must be met");
+        // TC02: a box across the side x = z/5: true
+        assertTrue(meetsFloats(frustum, 1.5, -0.5, 8, 2.5, 0.5, 9), "TC02: a box across a side must be met");
+        // TC03: a box beside the pyramid, inside its bounding box: false
+        assertFalse(meetsFloats(frustum, 1.5, -0.25, 0, 2, 0.25, 2), "TC03: a box beside the pyramid must not be met");
+        // TC04: a box beyond the base: false
+        assertFalse(meetsFloats(frustum, -1, -1, 10.5, 1, 1, 11), "TC04: a box beyond the base must not be met");
+
+        // ===== Boundary Values Tests =====
+        // TC11: outside the side x = z/5 by 0.98e-6 (within the margin 2.8e-6): true; by 0.98e-4: false
+        assertTrue(meetsFloats(frustum, 1 + 1e-6, -0.1, 0, 1.5, 0.1, 5), "TC11: a box within the margin must be met");
+        assertFalse(meetsFloats(frustum, 1 + 1e-4, -0.1, 0, 1.5, 0.1, 5), "TC11: a box beyond the margin must not be met");
+        // TC12: a box touching the apex from behind (max corner (0, 0, 0)): true
+        assertTrue(meetsFloats(frustum, -1, -1, -1, 0, 0, 0), "TC12: a box touching the apex must be met");
+        // TC13: after a refused set every box is met: true
+        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC13: the flat pyramid must be refused");
+        assertTrue(meetsFloats(frustum, -1, -1, 10.5, 1, 1, 11), "TC13: a refused frustum must set no box aside");
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#meetsTriangle}: a triangle is set aside only when it lies
+     * outside one face of the pyramid by more than the margin, as the renderer's test grows it.
+     */
+    @Test
+    void testMeetsTriangle() {
+        ShadowFrustum frustum = standard();
+        double len = Math.sqrt(1.04);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a triangle inside the pyramid: true
+        assertTrue(meetsTriangle(frustum, -0.5, -0.5, 5, 0.5, -0.5, 5, 0, 0.5, 6), "TC01: a triangle inside must be met");
+        // TC02: a triangle across the side x = z/5 (from x 0 to 3 at z 5, where the side is at x 1): true
+        assertTrue(meetsTriangle(frustum, 0, -0.5, 5, 3, -0.5, 5, 3, 0.5, 5), "TC02: a triangle across a side must be met");
+        // TC03: a triangle around the whole pyramid (its plane z = 5 cuts it): true
+        assertTrue(meetsTriangle(frustum, -50, -50, 5, 50, -50, 5, 0, 50, 5), "TC03: a triangle around the pyramid must be met");
+        // TC04: the triangle (1.1, 0, 0), (2.5, 0, 10), (5, 0, 10) in the plane y = 0, which crosses the
+        // pyramid: its box (x 1.1..5, z 0..10) meets the pyramid, but all three vertices are outside the
+        // side x = z/5 (by 1.08, 0.49 and 2.94): false
+        assertTrue(frustum.meetsPlane(0, 1, 0, 1.1, 0, 0), "TC04: the triangle's plane must cross the pyramid");
+        assertTrue(meets(frustum, 1.1, 0, 0, 5, 0, 10), "TC04: the triangle's box must meet the pyramid");
+        assertFalse(meetsTriangle(frustum, 1.1, 0, 0, 2.5, 0, 10, 5, 0, 10), "TC04: a triangle beside a side must not be met");
+        // TC05: a triangle behind the apex and beside it (x 0.5 to 1, z −1 to −3, outside the side x = z/5): false
+        assertFalse(meetsTriangle(frustum, 0.5, -1, -1, 1, 1, -1, 0.8, 0, -3), "TC05: a triangle behind the apex must not be met");
+        // TC06: a triangle beyond the base (z 10.5 to 12), wider than the base: false
+        assertFalse(meetsTriangle(frustum, -5, -5, 10.5, 5, -5, 12, 0, 5, 11), "TC06: a triangle beyond the base must not be met");
+
+        // ===== Boundary Values Tests =====
+        // The triangle of TC04 with its first vertex moved to (1 + ε·√1.04, 0, 5), ε outside the side
+        // x = z/5 (the vertex's edge towards the others points away from the pyramid).
+        // TC11: the vertex on the side (ε = 0): true
+        assertTrue(meetsTriangle(frustum, 1, 0, 5, 2.5, 0, 10, 5, 0, 10), "TC11: a triangle touching a side must be met");
+        // TC12: ε = 1e-6, within the margin 2.8e-6: true
+        assertTrue(meetsTriangle(frustum, 1 + 1e-6 * len, 0, 5, 2.5, 0, 10, 5, 0, 10),
+                "TC12: a triangle within the margin of a side must be met");
+        // TC13: ε = 1e-4, beyond the margin: false
+        assertFalse(meetsTriangle(frustum, 1 + 1e-4 * len, 0, 5, 2.5, 0, 10, 5, 0, 10),
+                "TC13: a triangle beyond the margin of a side must not be met");
+        // TC14: a triangle in the plane z = 5 with its vertex (1 + 1e-4·√1.04, 0, 5) 1e-4 outside the side,
+        // the other two 1e5 away: the renderer's closed test takes it as grown by 1e-9 of its edges,
+        // about 2e-4 here, so the ray from the apex to the base's edge point (2, 0, 10) hits it at
+        // (1, 0, 5): true
+        double[] huge = { 1 + 1e-4 * len, 0, 5, 1e5, -1e5, 5, 1e5, 1e5, 5 };
+        double t = Triangle.intersect(huge[0], huge[1], huge[2], huge[3] - huge[0], huge[4] - huge[1], huge[5] - huge[2],
+                huge[6] - huge[0], huge[7] - huge[1], huge[8] - huge[2], 0, 0, 0, 0, 2 / Math.sqrt(104), 0,
+                10 / Math.sqrt(104), Math.sqrt(104));
+        assertTrue(t < Geometry.NO_HIT, "TC14: the ray along the side must hit the grown triangle");
+        assertTrue(meetsTriangle(frustum, huge), "TC14: a triangle grown into the pyramid must be met");
+        // TC15: a triangle whose vertex touches the apex from behind: true
+        assertTrue(meetsTriangle(frustum, 0, 0, 0, -1, 0, -1, 0, -1, -1), "TC15: a triangle touching the apex must be met");
+        // TC16: the triangle of TC13 in a pyramid 0.5 thick (within the thickness): true
+        assertTrue(meetsTriangle(standard(0.5), 1 + 1e-4 * len, 0, 5, 2.5, 0, 10, 5, 0, 10),
+                "TC16: a triangle within the thickness must be met");
+        // TC17: after a refused set every triangle is met: true
+        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC17: the flat pyramid must be refused");
+        assertTrue(meetsTriangle(frustum, 0.5, -1, -1, 1, 1, -1, 0.8, 0, -3), "TC17: a refused frustum must set no triangle aside");
     }
 
     /** Test method for {@link ShadowFrustum#meetsPlane}. */
@@ -518,5 +634,78 @@ class ShadowFrustumTest {
                 "TC01: too few set-aside (" + planesRejected + ") or met (" + planesMet + ") planes");
         assertTrue(boxesThickOnly > 100 && planesThickOnly > 30, "TC01: the thickness decided too rarely (boxes "
                 + boxesThickOnly + ", planes " + planesThickOnly + ")");
+    }
+
+    /**
+     * Whether a segment meets a triangle by the renderer's closed test ({@link Triangle#intersect}).
+     *
+     * @param segment {start, end}
+     * @param v       the vertices p1, p2, p3
+     * @return true when the segment hits the triangle
+     */
+    private static boolean hits(double[] segment, double[] v) {
+        double dx = segment[3] - segment[0];
+        double dy = segment[4] - segment[1];
+        double dz = segment[5] - segment[2];
+        double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double e1x = v[3] - v[0];
+        double e1y = v[4] - v[1];
+        double e1z = v[5] - v[2];
+        double e2x = v[6] - v[0];
+        double e2y = v[7] - v[1];
+        double e2z = v[8] - v[2];
+        return length > 0 && Triangle.intersect(v[0], v[1], v[2], e1x, e1y, e1z, e2x, e2y, e2z,
+                Triangle.parallelLimit(e1x, e1y, e1z, e2x, e2y, e2z), segment[0], segment[1], segment[2],
+                dx / length, dy / length, dz / length, length) < Geometry.NO_HIT;
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#meetsTriangle} on seeded random pyramids, thin and thick: a
+     * set-aside triangle is hit by none of 200 segments the bundle's rays may cover.
+     */
+    @Test
+    void testRandomTriangles() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 300 random pyramids, a quarter of them thin, the others 1e-4 to 1 thick (log-uniform), × 40
+        // random triangles near them (vertices about a random point of a segment, up to 1e-3 to 30 apart)
+        Random rnd = new Random(20261201);
+        int rejected = 0;
+        int met = 0;
+        // set aside though the triangle's box meets the pyramid: what the triangle test adds
+        int boxMet = 0;
+        ShadowFrustum frustum = new ShadowFrustum();
+        for (int f = 0; f < 300; ++f) {
+            double[] p = randomPyramid(rnd);
+            double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
+            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], thickness))
+                continue;
+            double[][] segments = new double[200][];
+            for (int i = 0; i < segments.length; ++i)
+                segments[i] = raySegment(rnd, p, thickness);
+            for (int t = 0; t < 40; ++t) {
+                double[] centre = segmentPoint(rnd, raySegment(rnd, p, thickness));
+                double size = Math.pow(10, -3 + 4.5 * rnd.nextDouble());
+                double[] v = new double[9];
+                for (int k = 0; k < 9; ++k)
+                    v[k] = centre[k % 3] + size * (2 * rnd.nextDouble() - 1) + (size + thickness) * rnd.nextGaussian();
+                if (meetsTriangle(frustum, v)) {
+                    ++met;
+                    continue;
+                }
+                ++rejected;
+                double[] box = new double[6];
+                Triangle.bounds(v, 0, 3, 6, box, 0);
+                if (frustum.meetsBox(box, 0))
+                    ++boxMet;
+                for (double[] e : segments)
+                    if (hits(e, v))
+                        fail("TC01: pyramid " + Arrays.toString(p) + " thickness " + thickness + " set aside the"
+                                + " triangle " + Arrays.toString(v) + " that the ray " + Arrays.toString(e) + " hits");
+            }
+        }
+        // both answers are common, and many set-aside triangles have boxes that meet the pyramid
+        assertTrue(rejected > 1000 && met > 1000, "TC01: too few set-aside (" + rejected + ") or met (" + met
+                + ") triangles");
+        assertTrue(boxMet > 100, "TC01: too few triangles set aside only by the triangle test: " + boxMet);
     }
 }

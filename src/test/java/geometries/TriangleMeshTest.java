@@ -297,6 +297,19 @@ class TriangleMeshTest {
         assertTrue(uprightQuery.getFrustum().set(0.5, 0.5, 0.1, 0.5, 0.5, 5, 1, 0, 0, 0, 1, 0, 0),
                 "TC03: the pyramid must be set");
         assertTrue(upright.gather(uprightQuery), "TC03: the upright triangle must close the bundle");
+        // TC04: the pyramid from (0, 0, 0) to the square (±2, ±2, 10) and, in the plane y = 0 (which
+        // crosses it), the triangle (1.1, 0, 0), (2.5, 0, 10), (5, 0, 10): its box meets the pyramid but
+        // it lies outside the side x = z/5: false, and the hierarchy gathers nothing
+        TriangleMesh beside = new TriangleMesh(new double[] { 1.1, 0, 0, 2.5, 0, 10, 5, 0, 10, 1, 0, 5 },
+                new int[] { 0, 1, 2, 3, 1, 2 });
+        BoundingVolumeHierarchy besideTree = BoundingVolumeHierarchy.build(new TriangleMesh(
+                new double[] { 1.1, 0, 0, 2.5, 0, 10, 5, 0, 10 }, new int[] { 0, 1, 2 }));
+        Query besideQuery = besideTree.newQuery();
+        ShadowFrustum side = besideQuery.getFrustum();
+        assertTrue(side.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC04: the pyramid must be set");
+        assertTrue(side.meetsBox(new double[] { 1.1, 0, 0, 5, 0, 10 }, 0), "TC04: the pyramid must meet the box");
+        assertFalse(beside.mayMeet(0, side), "TC04: a triangle beside the pyramid must not meet it");
+        assertFalse(besideTree.gather(besideQuery), "TC04: a triangle beside the pyramid must leave the bundle open");
 
         // ===== Boundary Values Tests =====
         // TC11: the apex on the square's plane: true (the rays may graze it)
@@ -305,6 +318,8 @@ class TriangleMeshTest {
         // TC12: the apex 0.05 above the plane in a pyramid 0.1 thick: true
         assertTrue(mesh.mayMeet(1, PolygonTest.pyramid(new Point3D(0.5, 0.5, 0.05), 5, 0.1)),
                 "TC12: within the thickness");
+        // TC13: triangle 1 of TC04's mesh, its first vertex (1, 0, 5) on the side x = z/5: true
+        assertTrue(beside.mayMeet(1, side), "TC13: a triangle touching a side of the pyramid must meet it");
     }
 
     /**
