@@ -857,7 +857,7 @@ public final class BoundingVolumeHierarchy {
      */
     private static int triangleOnPacket(Query query, TriangleMesh mesh, int part, int count, double minK) {
         double[] data = query.triangle;
-        mesh.triangleData(part, data);
+        mesh.triangleData(part, data, 0);
         double p1x = data[0];
         double p1y = data[1];
         double p1z = data[2];

@@ -411,26 +411,6 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
-     * Writes the data of one triangle's test ({@link Triangle#intersect}) into an array: its first vertex
-     * p1, its edges e1 = p2 − p1 and e2 = p3 − p1 and its parallel limit, the numbers
-     * {@link #triangleHit} tests, for testing the triangle on many rays.
-     *
-     * @param t      the triangle's index
-     * @param target the array, of {@value #TRIANGLE_DATA} doubles or more
-     */
-    void triangleData(int t, double[] target) {
-        int a = corner(t, 0);
-        int b = corner(t, 1);
-        int c = corner(t, 2);
-        for (int k = 0; k < 3; ++k) {
-            target[k] = vertices[a + k];
-            target[3 + k] = vertices[b + k] - vertices[a + k];
-            target[6 + k] = vertices[c + k] - vertices[a + k];
-        }
-        target[9] = parallelLimits[t];
-    }
-
-    /**
      * Writes the box of one triangle, the box of its {@link Triangle}, into an array.
      *
      * @param t      the triangle's index
@@ -476,7 +456,7 @@ public final class TriangleMesh extends Geometry {
      *
      * @param t      the triangle's index
      * @param target the array
-     * @param offset where the ten numbers go
+     * @param offset where the {@value #TRIANGLE_DATA} numbers go
      */
     void triangleData(int t, double[] target, int offset) {
         int a = corner(t, 0);

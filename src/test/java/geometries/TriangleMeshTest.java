@@ -336,7 +336,7 @@ class TriangleMeshTest {
         // TC01: every triangle: p1 its first vertex, e1 = p2 − p1, e2 = p3 − p1, and the Triangle's
         // parallel limit of those edges
         for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
-            mesh.triangleData(t, data);
+            mesh.triangleData(t, data, 0);
             Point3D p1 = mesh.getVertex(mesh.getVertexIndex(t, 0));
             Vector e1 = mesh.getVertex(mesh.getVertexIndex(t, 1)).subtract(p1);
             Vector e2 = mesh.getVertex(mesh.getVertexIndex(t, 2)).subtract(p1);
@@ -351,7 +351,7 @@ class TriangleMeshTest {
         int hits = 0;
         for (int r = 0; r < 500; ++r) {
             int t = rnd.nextInt(mesh.getTrianglesCount());
-            mesh.triangleData(t, data);
+            mesh.triangleData(t, data, 0);
             double u = 1.4 * rnd.nextDouble() - 0.2;
             double v = 1.4 * rnd.nextDouble() - 0.2;
             Point3D target = new Point3D(data[0] + u * data[3] + v * data[6], data[1] + u * data[4] + v * data[7],
@@ -370,6 +370,17 @@ class TriangleMeshTest {
         // ===== Boundary Values Tests =====
         // TC11: the array's numbers past the data are left as they were (−7)
         assertEquals(-7, data[TriangleMesh.TRIANGLE_DATA], 0, "TC11: a number past the data must be left alone");
+        // TC12: written at an offset (after another triangle's data): the same numbers there, the
+        // numbers before the offset left as they were
+        double[] two = new double[2 * TriangleMesh.TRIANGLE_DATA];
+        mesh.triangleData(0, two, 0);
+        mesh.triangleData(5, two, TriangleMesh.TRIANGLE_DATA);
+        mesh.triangleData(5, data, 0);
+        for (int k = 0; k < TriangleMesh.TRIANGLE_DATA; ++k)
+            assertEquals(data[k], two[TriangleMesh.TRIANGLE_DATA + k], 0, "TC12: number " + k + " at the offset");
+        mesh.triangleData(0, data, 0);
+        for (int k = 0; k < TriangleMesh.TRIANGLE_DATA; ++k)
+            assertEquals(data[k], two[k], 0, "TC12: number " + k + " before the offset must be left alone");
     }
 
     /**
