@@ -26,8 +26,10 @@ import static primitives.Util.requireNonNull;
  * inner node both children's boxes are tested, and the nearer child (by the split axis) is entered
  * first. It is built top down with the binned surface-area heuristic. A {@link TriangleMesh} gives
  * the tree one body per triangle, held by reference (the mesh and the triangle's index, two ints,
- * and its box in floats), with no object and no copy of its vertices per triangle: the tree's
- * triangles are tested straight from the mesh's arrays. Other bodies (a {@link Triangle} object
+ * and its box in floats), with no object and no copy of its vertices per triangle: a single ray
+ * tests the tree's triangles straight from the mesh's arrays, while a bundle copies the numbers of
+ * each triangle's test once (a gathered triangle into the query, a packet's leaf triangle for the
+ * leaf's rays). Other bodies (a {@link Triangle} object
  * among them) are tested through their own methods. Unbounded bodies (planes, tubes) stay outside the tree and are tested
  * on every ray, as are intersectables that are not {@link Geometry}s.
  * <p>
@@ -117,12 +119,13 @@ public final class BoundingVolumeHierarchy {
         private double ktr;
         private final ShadowFrustum frustum = new ShadowFrustum();
         /**
-         * The tree's bodies {@link #gather} found, and how many: -1 when they were too many. A mesh's
-         * triangle is −1 here, its numbers in {@link #gatheredTriangles}.
+         * The tree's bodies {@link #gather} found, in leaf order; a mesh's triangle is −1 here, its
+         * numbers in {@link #gatheredTriangles}.
          */
         private final int[] gathered = new int[MAX_GATHERED];
         /** Per body {@link #gather} found that is a mesh's triangle, at its place: its {@value #GATHERED_TRIANGLE} numbers. */
         private final double[] gatheredTriangles = new double[GATHERED_TRIANGLE * MAX_GATHERED];
+        /** How many bodies {@link #gather} found, or −1 when they were too many (a subtree was kept). */
         private int gatheredCount;
         /** When {@link #gather} found too many bodies: the node below which all of them lie. */
         private int subtree;
@@ -662,8 +665,8 @@ public final class BoundingVolumeHierarchy {
      * visited with the first and the last of them that meet its box (the rays before the first and
      * after the last do not), a child's looked for between its parent's (a child's box lies inside its
      * parent's: the same numbers or nearer in, so a ray that misses the parent misses the child), and
-     * children are entered nearer first by the first ray's direction. A leaf lists the rays between them that meet its box
-     * and tests its bodies on them ({@link #leafOnPacket}).
+     * children are entered nearer first by the first ray's direction. A leaf lists the rays between
+     * them that meet its box and tests its bodies on them ({@link #leafOnPacket}).
      *
      * @param active the number of unblocked rays
      */
@@ -772,39 +775,10 @@ public final class BoundingVolumeHierarchy {
         return count;
     }
 
-    /** Whether ray r of the packet meets a node's box before its distance, by {@link #slabsMeet}. */
+    /** Whether ray r of the packet meets a node's box before its distance. */
     private boolean rayMeets(Query query, int r, int node) {
-        double[] box = nodeBounds;
-        int b = 6 * node;
-        return slabsMeet(box[b], box[b + 1], box[b + 2], box[b + 3], box[b + 4], box[b + 5], query.ox[r], query.oy[r],
-                query.oz[r], query.ix[r], query.iy[r], query.iz[r], query.maxTs[r]);
-    }
-
-    /**
-     * Whether a ray meets a box [x0, x1] × [y0, y1] × [z0, z1] between its start and maxT: the test of
-     * {@link #boxHit} on the same numbers, its near faces chosen among the box's numbers (which stay
-     * the same through a scan of the packet's rays) rather than by their place in the array. Small
-     * enough for the JIT to inline.
-     *
-     * @param ix the inverse of the ray's direction, x
-     * @param iy the same for y
-     * @param iz the same for z
-     */
-    private static boolean slabsMeet(double x0, double y0, double z0, double x1, double y1, double z1, double ox,
-                                     double oy, double oz, double ix, double iy, double iz, double maxT) {
-        double near = ((ix < 0 ? x1 : x0) - ox) * ix;
-        double far = ((ix < 0 ? x0 : x1) - ox) * ix;
-        near = near > 0 ? near : 0;
-        far = far < maxT ? far : maxT;
-        double lo = ((iy < 0 ? y1 : y0) - oy) * iy;
-        double hi = ((iy < 0 ? y0 : y1) - oy) * iy;
-        near = lo > near ? lo : near;
-        far = hi < far ? hi : far;
-        lo = ((iz < 0 ? z1 : z0) - oz) * iz;
-        hi = ((iz < 0 ? z0 : z1) - oz) * iz;
-        near = lo > near ? lo : near;
-        far = hi < far ? hi : far;
-        return near <= far;
+        return boxEntry(node, query.ox[r], query.oy[r], query.oz[r], query.ix[r], query.iy[r], query.iz[r],
+                query.maxTs[r]) != MISSED;
     }
 
     /**
@@ -858,6 +832,8 @@ public final class BoundingVolumeHierarchy {
     private static int triangleOnPacket(Query query, TriangleMesh mesh, int part, int count, double minK) {
         double[] data = query.triangle;
         mesh.triangleData(part, data, 0);
+        // in locals, not read from the array for each ray: the JIT cannot tell that the rays' arrays,
+        // doubles too, do not overlap it, and would read the ten numbers again per ray
         double p1x = data[0];
         double p1y = data[1];
         double p1z = data[2];
@@ -933,10 +909,7 @@ public final class BoundingVolumeHierarchy {
         double ix = 1 / dx;
         double iy = 1 / dy;
         double iz = 1 / dz;
-        int nearX = ix < 0 ? 3 : 0;
-        int nearY = iy < 0 ? 3 : 0;
-        int nearZ = iz < 0 ? 3 : 0;
-        if (!boxHit(root, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT))
+        if (boxEntry(root, ox, oy, oz, ix, iy, iz, query.maxT) == MISSED)
             return true;
         int negative = (dx < 0 ? 1 : 0) | (dy < 0 ? 2 : 0) | (dz < 0 ? 4 : 0);
         int[] stack = query.stack;
@@ -949,8 +922,8 @@ public final class BoundingVolumeHierarchy {
             if (count < 0) {
                 int near = first + (negative >> (-1 - count) & 1);
                 int far = 2 * first + 1 - near;
-                double nearEntry = boxEntry(near, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT);
-                double farEntry = boxEntry(far, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, query.maxT);
+                double nearEntry = boxEntry(near, ox, oy, oz, ix, iy, iz, query.maxT);
+                double farEntry = boxEntry(far, ox, oy, oz, ix, iy, iz, query.maxT);
                 if (nearEntry != MISSED) {
                     if (farEntry != MISSED) {
                         entries[top] = farEntry;
@@ -1053,42 +1026,44 @@ public final class BoundingVolumeHierarchy {
     }
 
     /**
-     * Whether a ray meets a node's box between its start and maxT (the slab test). Each slab is
-     * entered at its near face (the low one for a positive direction component, so for +0.0, and
-     * the high one for a negative component, so for −0.0) and left at the far one. A direction
-     * component of ±0 makes the inverse ±∞: a ray outside the slab then gets an empty interval, one
-     * inside it (−∞, +∞), and one lying exactly in a face's plane gets 0·∞ = NaN there, which the
-     * comparisons below skip, so the slab (closed) does not restrict the interval. The near faces
-     * come precomputed per ray, which keeps the method small enough for the JIT to inline.
-     *
-     * @param nearX the index of the near face's x in a box: 3 (the high face) when ix < 0, else 0
-     * @param nearY the same for y
-     * @param nearZ the same for z
+     * Where a ray enters a node's box between its start and maxT, or {@link #MISSED}: the slab test
+     * ({@link #slabEntry}) on the box's numbers.
      */
-    private boolean boxHit(int node, double ox, double oy, double oz, double ix, double iy, double iz,
-                           int nearX, int nearY, int nearZ, double maxT) {
-        return boxEntry(node, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, maxT) != MISSED;
+    private double boxEntry(int node, double ox, double oy, double oz, double ix, double iy, double iz,
+                            double maxT) {
+        double[] box = nodeBounds;
+        int b = 6 * node;
+        return slabEntry(box[b], box[b + 1], box[b + 2], box[b + 3], box[b + 4], box[b + 5], ox, oy, oz, ix, iy, iz,
+                maxT);
     }
 
     /**
-     * {@link #boxHit}, telling where the ray enters the box.
+     * Where a ray enters a box [x0, x1] × [y0, y1] × [z0, z1] between its start and maxT (the slab
+     * test), or {@link #MISSED} when it does not meet the box there. Each slab is entered at its near
+     * face (the low one for a positive direction component, so for +0.0, and the high one for a
+     * negative component, so for −0.0) and left at the far one. A direction component of ±0 makes the
+     * inverse ±∞: a ray outside the slab then gets an empty interval, one inside it (−∞, +∞), and one
+     * lying exactly in a face's plane gets 0·∞ = NaN there, which the comparisons below skip, so the
+     * slab (closed) does not restrict the interval. Small enough for the JIT to inline into every walk.
      *
+     * @param ix   the inverse of the ray's direction, x
+     * @param iy   the same for y
+     * @param iz   the same for z
+     * @param maxT the largest distance that counts
      * @return the distance (0 or more) where the ray enters the box, or {@link #MISSED}
      */
-    private double boxEntry(int node, double ox, double oy, double oz, double ix, double iy, double iz,
-                            int nearX, int nearY, int nearZ, double maxT) {
-        double[] box = nodeBounds;
-        int b = 6 * node;
-        double near = (box[b + nearX] - ox) * ix;
-        double far = (box[b + 3 - nearX] - ox) * ix;
+    private static double slabEntry(double x0, double y0, double z0, double x1, double y1, double z1, double ox,
+                                    double oy, double oz, double ix, double iy, double iz, double maxT) {
+        double near = ((ix < 0 ? x1 : x0) - ox) * ix;
+        double far = ((ix < 0 ? x0 : x1) - ox) * ix;
         near = near > 0 ? near : 0;
         far = far < maxT ? far : maxT;
-        double lo = (box[b + 1 + nearY] - oy) * iy;
-        double hi = (box[b + 4 - nearY] - oy) * iy;
+        double lo = ((iy < 0 ? y1 : y0) - oy) * iy;
+        double hi = ((iy < 0 ? y0 : y1) - oy) * iy;
         near = lo > near ? lo : near;
         far = hi < far ? hi : far;
-        lo = (box[b + 2 + nearZ] - oz) * iz;
-        hi = (box[b + 5 - nearZ] - oz) * iz;
+        lo = ((iz < 0 ? z1 : z0) - oz) * iz;
+        hi = ((iz < 0 ? z0 : z1) - oz) * iz;
         near = lo > near ? lo : near;
         far = hi < far ? hi : far;
         return near <= far ? near : MISSED;

@@ -54,19 +54,6 @@ public abstract class RayTracerBase {
     public abstract Color traceRay(Ray ray);
 
     /**
-     * The colour seen along a ray, traced on the calling thread whose state is at hand: a ray tracer
-     * that keeps per-thread state takes it from here instead of looking it up again. By default
-     * {@link #traceRay(Ray)}.
-     *
-     * @param ray   the ray
-     * @param state the calling thread's state
-     * @return the colour it sees (the background when it hits nothing)
-     */
-    Color traceRay(Ray ray, ThreadState state) {
-        return traceRay(ray);
-    }
-
-    /**
      * Gets ready to trace the scene as it is now: {@link Render} calls this before every render.
      * Nothing to do by default; a ray tracer with an acceleration structure builds it here.
      */

@@ -39,13 +39,13 @@ public class RayTracerBasic extends RayTracerBase {
         super(scene);
     }
 
+    /**
+     * {@inheritDoc} The calling thread's state is looked up once here and passed down to every
+     * intersection, light and spread ray of the path.
+     */
     @Override
     public Color traceRay(Ray ray) {
-        return traceRay(ray, threadState());
-    }
-
-    @Override
-    Color traceRay(Ray ray, ThreadState state) {
+        ThreadState state = threadState();
         GeoPoint closestPoint = findClosestIntersection(ray, state);
         return closestPoint == null ? scene.background : calcColor(closestPoint, ray, state);
     }

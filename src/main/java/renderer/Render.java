@@ -368,13 +368,12 @@ public class Render {
         private Color sample(ThreadState state, int j, int i, double dx, double dy) {
             if (!camera.hasAperture()) {
                 ++state.primaryRays;
-                return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i, dx, dy), state);
+                return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i, dx, dy));
             }
             JitteredGrid apertureGrid = camera.getApertureGrid();
             state.primaryRays += apertureGrid.getSamplesCount();
             return average(apertureGrid, state.aperturePoints(apertureGrid), state,
-                    (u, v) -> rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v),
-                            state));
+                    (u, v) -> rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v)));
         }
 
         /**

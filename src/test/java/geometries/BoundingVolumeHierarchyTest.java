@@ -501,6 +501,21 @@ class BoundingVolumeHierarchyTest {
         }
         // the rays are aimed so that most of them hit something: the comparison is not vacuous
         assertTrue(hits > 20 * 500 / 2, "TC01: too few rays hit anything (" + hits + ")");
+        // TC02: two rows of 8 spheres of radius 1 along z, at z = 0..70 and z = 1000..1070 (the root
+        // splits them, and both children are met): a ray along +z from z = −50 hits the near row's
+        // first sphere at 49, one along −z from z = 2000 the far row's last at 929; once that hit is
+        // found, the other row, set aside on the stack, lies beyond it
+        Geometries rows = new Geometries();
+        for (int i = 0; i < 8; ++i)
+            rows.add(new Sphere(new Point3D(0, 0, 10 * i), 1), new Sphere(new Point3D(0, 0, 1000 + 10 * i), 1));
+        BoundingVolumeHierarchy rowsTree = BoundingVolumeHierarchy.build(rows);
+        Query rowsQuery = rowsTree.newQuery();
+        Ray forward = new Ray(new Point3D(0, 0, -50), new Vector(0, 0, 1));
+        Ray backward = new Ray(new Point3D(0, 0, 2000), new Vector(0, 0, -1));
+        assertPoint(new Point3D(0, 0, -1), rowsTree.closestHit(forward, rowsQuery).point, "TC02: forward");
+        assertPoint(new Point3D(0, 0, 1071), rowsTree.closestHit(backward, rowsQuery).point, "TC02: backward");
+        assertSameHit(reference(rows, forward), rowsTree.closestHit(forward, rowsQuery), forward, "TC02: forward");
+        assertSameHit(reference(rows, backward), rowsTree.closestHit(backward, rowsQuery), backward, "TC02: backward");
     }
 
     /**

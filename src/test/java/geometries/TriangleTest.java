@@ -2,6 +2,7 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -369,5 +370,33 @@ class TriangleTest {
         Point3D p = ray.getP0();
         Vector d = ray.getDir();
         return body.nearestHit(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * Test method for {@link Triangle#mayMeet(ShadowFrustum)}: a triangle can meet a shadow bundle only
+     * when its plane crosses the bundle's pyramid and it is not outside one of the pyramid's faces.
+     */
+    @Test
+    void testMayMeet() {
+        // the pyramid from (0, 0, 0) to the square (±2, ±2, 10): its sides x = ±z/5 and y = ±z/5
+        ShadowFrustum frustum = new ShadowFrustum();
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "the pyramid must be set");
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a triangle across the pyramid's axis, (−1, −1, 5), (1, −1, 5), (0, 1, 5): true
+        assertTrue(new Triangle(new Point3D(-1, -1, 5), new Point3D(1, -1, 5), new Point3D(0, 1, 5)).mayMeet(frustum),
+                "TC01: a triangle across the pyramid must meet it");
+        // TC02: in the plane y = 0 (which crosses the pyramid), (1.1, 0, 0), (2.5, 0, 10), (5, 0, 10):
+        // its box meets the pyramid, but it lies outside the side x = z/5: false
+        Triangle beside = new Triangle(new Point3D(1.1, 0, 0), new Point3D(2.5, 0, 10), new Point3D(5, 0, 10));
+        assertTrue(frustum.meetsBox(new double[] { 1.1, 0, 0, 5, 0, 10 }, 0), "TC02: the pyramid must meet the box");
+        assertFalse(beside.mayMeet(frustum), "TC02: a triangle beside the pyramid must not meet it");
+        // TC03: the plane z = 20, beyond the square, its triangle over the axis: false (the plane test)
+        assertFalse(new Triangle(new Point3D(-1, -1, 20), new Point3D(1, -1, 20), new Point3D(0, 1, 20))
+                .mayMeet(frustum), "TC03: a triangle beyond the light must not meet the pyramid");
+
+        // ===== Boundary Values Tests =====
+        // TC11: its first vertex (1, 0, 5) on the side x = z/5, the rest outside: true
+        assertTrue(new Triangle(new Point3D(1, 0, 5), new Point3D(2.5, 0, 10), new Point3D(5, 0, 10)).mayMeet(frustum),
+                "TC11: a triangle touching a side of the pyramid must meet it");
     }
 }

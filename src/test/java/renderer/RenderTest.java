@@ -13,6 +13,7 @@ import static testutil.TestAssertions.assertMessage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.MissingResourceException;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.Test;
 
@@ -30,6 +31,7 @@ import lighting.SpotLight;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point3D;
+import primitives.Ray;
 import primitives.Vector;
 import scene.Scene;
 
@@ -928,5 +930,29 @@ class RenderTest {
                             .setFocalDistance(970).setSqrtApertureRays(2),
                     new RayTracerBasic(shadedScene("dof threads " + threads[t], true)), 3, false, threads[t]);
         assertSamePicture(renders[0], renders[1], "TC02: 1 and 3 threads must give the same picture");
+    }
+
+    /**
+     * Test method for {@link Render#renderImage()}: the render calls the ray tracer's own
+     * {@link RayTracerBase#traceRay(Ray)}, also when a subclass overrides it (to count or mark rays).
+     */
+    @Test
+    void testOverriddenTraceRay() {
+        Color marked = new Color(200, 0, 100);
+        AtomicInteger calls = new AtomicInteger();
+        RayTracerBasic marking = new RayTracerBasic(floorScene("marked")) {
+            @Override
+            public Color traceRay(Ray ray) {
+                calls.incrementAndGet();
+                return marked;
+            }
+        };
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a 10 × 10 picture, 2 × 2 rays a pixel, 2 threads: 400 calls, every pixel (200, 0, 100)
+        Render render = render("overriddenTraceRay", 10, marking, 2, 2);
+        assertEquals(400, calls.get(), "TC01: every ray must go through the overriding traceRay");
+        for (int y = 0; y < 10; ++y)
+            for (int x = 0; x < 10; ++x)
+                assertEquals(new java.awt.Color(200, 0, 100), pixel(render, x, y), "TC01: pixel " + x + ", " + y);
     }
 }
