@@ -95,7 +95,12 @@ public final class BoundingVolumeHierarchy {
     private final Intersectable[] others;
     /** Whether {@link #gather} culls bodies: false for the brute-force {@link #scan}. */
     private final boolean culling;
-    private final double[] nodeBounds;
+    /**
+     * Per node: its box, in floats rounded outward like {@link #triangleBounds}: a ray or a bundle may
+     * then enter a node more, never one less, so every answer stays the same, and the walks read half
+     * the memory.
+     */
+    private final float[] nodeBounds;
     /**
      * Two ints per node: a leaf's first body and its body count (positive); an inner node's left
      * child (its right child is the node after it) and −1 − its split axis.
@@ -259,7 +264,9 @@ public final class BoundingVolumeHierarchy {
         this.culling = tree;
         Builder builder = new Builder(owners, threads);
         builder.build();
-        this.nodeBounds = builder.nodeBounds;
+        this.nodeBounds = new float[6 * builder.nodesCount];
+        for (int node = 0; node < builder.nodesCount; ++node)
+            roundOutward(builder.nodeBounds, nodeBounds, 6 * node);
         this.nodeLinks = builder.nodeLinks;
         this.nodesCount = builder.nodesCount;
         this.depth = builder.depth;
@@ -281,12 +288,24 @@ public final class BoundingVolumeHierarchy {
         for (int b = from; b < to; ++b) {
             int part = bodyPart[b];
             if (part >= 0)
-                for (int k = 0; k < 3; ++k) {
-                    float low = (float) boxes[6 * b + k];
-                    float high = (float) boxes[6 * b + 3 + k];
-                    triangleBounds[6 * b + k] = low > boxes[6 * b + k] ? Math.nextDown(low) : low;
-                    triangleBounds[6 * b + 3 + k] = high < boxes[6 * b + 3 + k] ? Math.nextUp(high) : high;
-                }
+                roundOutward(boxes, triangleBounds, 6 * b);
+        }
+    }
+
+    /**
+     * Copies a box from doubles into floats, each bound rounded outward, so the box in floats holds
+     * the one in doubles.
+     *
+     * @param boxes  the boxes in doubles
+     * @param target the boxes in floats
+     * @param b      where the box lies in both
+     */
+    private static void roundOutward(double[] boxes, float[] target, int b) {
+        for (int k = 0; k < 3; ++k) {
+            float low = (float) boxes[b + k];
+            float high = (float) boxes[b + 3 + k];
+            target[b + k] = low > boxes[b + k] ? Math.nextDown(low) : low;
+            target[b + 3 + k] = high < boxes[b + 3 + k] ? Math.nextUp(high) : high;
         }
     }
 
@@ -1031,7 +1050,7 @@ public final class BoundingVolumeHierarchy {
      */
     private double boxEntry(int node, double ox, double oy, double oz, double ix, double iy, double iz,
                             double maxT) {
-        double[] box = nodeBounds;
+        float[] box = nodeBounds;
         int b = 6 * node;
         return slabEntry(box[b], box[b + 1], box[b + 2], box[b + 3], box[b + 4], box[b + 5], ox, oy, oz, ix, iy, iz,
                 maxT);

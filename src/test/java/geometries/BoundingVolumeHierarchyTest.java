@@ -516,6 +516,25 @@ class BoundingVolumeHierarchyTest {
         assertPoint(new Point3D(0, 0, 1071), rowsTree.closestHit(backward, rowsQuery).point, "TC02: backward");
         assertSameHit(reference(rows, forward), rowsTree.closestHit(forward, rowsQuery), forward, "TC02: forward");
         assertSameHit(reference(rows, backward), rowsTree.closestHit(backward, rowsQuery), backward, "TC02: backward");
+
+        // ===== Boundary Values Tests =====
+        // TC11: 8 spheres of radius 0.5 at x = 2^24 + 1 + 3i (no float holds these numbers: the tree's
+        // boxes, in floats, are rounded outward), rays along −z through points 1e-7 inside each sphere's
+        // outline at its lowest and highest x: every one hits, as the brute-force search finds
+        Geometries far = new Geometries();
+        double x0 = (1 << 24) + 1;
+        for (int i = 0; i < 8; ++i)
+            far.add(new Sphere(new Point3D(x0 + 3 * i, 0.3, 0), 0.5));
+        BoundingVolumeHierarchy farTree = BoundingVolumeHierarchy.build(far);
+        assertTrue(farTree.getNodesCount() > 1, "TC11: the spheres must be split into several nodes");
+        Query farQuery = farTree.newQuery();
+        for (int i = 0; i < 8; ++i)
+            for (double side : new double[] { -1, 1 }) {
+                Ray ray = new Ray(new Point3D(x0 + 3 * i + side * (0.5 - 1e-7), 0.3, 10), new Vector(0, 0, -1));
+                GeoPoint expected = reference(far, ray);
+                assertTrue(expected != null, "TC11: sphere " + i + " must be hit near its outline");
+                assertSameHit(expected, farTree.closestHit(ray, farQuery), ray, "TC11: sphere " + i + " side " + side);
+            }
     }
 
     /**
