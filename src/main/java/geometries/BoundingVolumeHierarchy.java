@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
-import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
 
 import geometries.Intersectable.GeoPoint;
@@ -53,15 +52,15 @@ public final class BoundingVolumeHierarchy {
     /** The box around nothing, which any box grows: copied, never changed. */
     private static final double[] EMPTY_BOX = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
-    /** What {@link #boxEntry} answers for a ray that misses the box: no entry distance is negative. */
-    private static final double MISSED = -1;
+    /** What {@link #slabEntry} answers for a ray that misses the box: no entry distance is negative. */
+    static final double MISSED = -1;
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
     /**
      * The numbers a gathered mesh triangle keeps for the bundle's rays: the ten of its test (see
      * {@link TriangleMesh#triangleData}) and its mesh's {@code kT}.
      */
-    private static final int GATHERED_TRIANGLE = 11;
+    private static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_DATA + 1;
 
     /** The name of the threads that share the build's work. */
     private static final String BUILD_THREADS = "hierarchy-build";
@@ -559,7 +558,7 @@ public final class BoundingVolumeHierarchy {
                     TriangleMesh mesh = (TriangleMesh) owners[bodyOwner[b]];
                     int d = GATHERED_TRIANGLE * slot;
                     mesh.triangleData(part, query.gatheredTriangles, d);
-                    query.gatheredTriangles[d + 10] = mesh.getMaterial().getKt();
+                    query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA] = mesh.getMaterial().getKt();
                 }
                 query.gathered[slot] = part >= 0 ? -1 : b;
                 query.gatheredCount = slot + 1;
@@ -618,11 +617,8 @@ public final class BoundingVolumeHierarchy {
      */
     public double gatheredTransmittance(double ox, double oy, double oz, double dx, double dy, double dz,
                                         double maxT, double minK, Query query) {
-        query.maxT = maxT;
-        query.ktr = 1;
-        for (int i = 0; i < query.unboundedCount; ++i)
-            if (!visit(query.gatheredUnbounded[i], query, ox, oy, oz, dx, dy, dz, true, minK))
-                return 0;
+        if (!throughGatheredUnbounded(query, ox, oy, oz, dx, dy, dz, maxT, minK))
+            return 0;
         if (query.gatheredCount < 0) {
             if (!walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK))
                 return 0;
@@ -670,13 +666,23 @@ public final class BoundingVolumeHierarchy {
 
     /** The transparency of the gathered unbounded bodies along ray r of the packet, 0 when they block it. */
     private static double throughUnbounded(Query query, int r, double minK) {
-        query.maxT = query.maxTs[r];
+        return throughGatheredUnbounded(query, query.ox[r], query.oy[r], query.oz[r], query.dx[r], query.dy[r],
+                query.dz[r], query.maxTs[r], minK) ? query.ktr : 0;
+    }
+
+    /**
+     * Starts a transmittance query up to a distance and dims it by the gathered unbounded bodies.
+     *
+     * @return false when they block the ray; else the query's ktr holds their transparency
+     */
+    private static boolean throughGatheredUnbounded(Query query, double ox, double oy, double oz, double dx,
+                                                    double dy, double dz, double maxT, double minK) {
+        query.maxT = maxT;
         query.ktr = 1;
         for (int i = 0; i < query.unboundedCount; ++i)
-            if (!visit(query.gatheredUnbounded[i], query, query.ox[r], query.oy[r], query.oz[r], query.dx[r],
-                    query.dy[r], query.dz[r], true, minK))
-                return 0;
-        return query.ktr;
+            if (!visit(query.gatheredUnbounded[i], query, ox, oy, oz, dx, dy, dz, true, minK))
+                return false;
+        return true;
     }
 
     /**
@@ -979,7 +985,7 @@ public final class BoundingVolumeHierarchy {
         double[] data = query.gatheredTriangles;
         int d = GATHERED_TRIANGLE * i;
         return Triangle.intersect(data, d, ox, oy, oz, dx, dy, dz, query.maxT) == Geometry.NO_HIT
-                || dim(query, data[d + 10], minK);
+                || dim(query, data[d + TriangleMesh.TRIANGLE_DATA], minK);
     }
 
     /** {@link #visit} for body b of the tree. */
@@ -996,24 +1002,11 @@ public final class BoundingVolumeHierarchy {
      */
     private boolean visitTriangle(int b, int part, Query query, double ox, double oy, double oz, double dx,
                                   double dy, double dz, boolean transmittance, double minK) {
-        double t = triangleHit(b, part, ox, oy, oz, dx, dy, dz, query.maxT);
+        TriangleMesh mesh = (TriangleMesh) owners[bodyOwner[b]];
+        double t = mesh.triangleHit(part, ox, oy, oz, dx, dy, dz, query.maxT);
         if (t == Geometry.NO_HIT)
             return true;
-        Geometry mesh = owners[bodyOwner[b]];
         return transmittance ? dim(query, mesh.getMaterial().getKt(), minK) : keepNearer(query, t, mesh, part);
-    }
-
-    /**
-     * The renderer's test of body b of the tree, a mesh's triangle, against a ray.
-     *
-     * @param b    the body, in leaf order
-     * @param part its triangle in its mesh
-     * @param maxT the largest distance that counts
-     * @return the distance in (0, maxT], or {@link Geometry#NO_HIT}
-     */
-    private double triangleHit(int b, int part, double ox, double oy, double oz, double dx, double dy, double dz,
-                               double maxT) {
-        return ((TriangleMesh) owners[bodyOwner[b]]).triangleHit(part, ox, oy, oz, dx, dy, dz, maxT);
     }
 
     /**
@@ -1071,7 +1064,7 @@ public final class BoundingVolumeHierarchy {
      * @param maxT the largest distance that counts
      * @return the distance (0 or more) where the ray enters the box, or {@link #MISSED}
      */
-    private static double slabEntry(double x0, double y0, double z0, double x1, double y1, double z1, double ox,
+    static double slabEntry(double x0, double y0, double z0, double x1, double y1, double z1, double ox,
                                     double oy, double oz, double ix, double iy, double iz, double maxT) {
         double near = ((ix < 0 ? x1 : x0) - ox) * ix;
         double far = ((ix < 0 ? x0 : x1) - ox) * ix;

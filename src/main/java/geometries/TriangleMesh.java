@@ -322,14 +322,14 @@ public final class TriangleMesh extends Geometry {
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         Point3D p0 = ray.getP0();
         Vector dir = ray.getDir();
-        BoxTest boxTest = new BoxTest(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), maxDistance);
-        if (!boxTest.meets(box, 0))
+        double[] inverse = { 1 / dir.getX(), 1 / dir.getY(), 1 / dir.getZ() };
+        if (!meets(box, p0, inverse, maxDistance))
             return null;
         List<GeoPoint> hits = new ArrayList<>();
         double[] triangleBox = new double[6];
         for (int t = 0; t < getTrianglesCount(); ++t) {
             bounds(t, triangleBox, 0);
-            if (boxTest.meets(triangleBox, 0)) {
+            if (meets(triangleBox, p0, inverse, maxDistance)) {
                 List<GeoPoint> found = getTriangle(t).findGeoIntersectionsHelper(ray, maxDistance);
                 if (found != null)
                     hits.add(new MeshPoint(this, t, found.get(0).point));
@@ -342,34 +342,17 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
-     * The slab test of a ray against boxes, for the course's query: whether the ray meets a box between
-     * its start and a distance.
+     * Whether a ray meets a box between its start and a distance, for the course's query: the
+     * hierarchy's slab test ({@link BoundingVolumeHierarchy#slabEntry}).
+     *
+     * @param box     the box
+     * @param p0      the ray's start
+     * @param inverse the inverses of its direction's components
+     * @param maxT    the distance
      */
-    private static final class BoxTest {
-        private final double[] origin;
-        private final double[] inverse;
-        private final double maxT;
-
-        BoxTest(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-            this.origin = new double[] { ox, oy, oz };
-            this.inverse = new double[] { 1 / dx, 1 / dy, 1 / dz };
-            this.maxT = maxT;
-        }
-
-        /** Whether the ray meets the box at b; a slab whose test gives NaN (a ray in its face) does not restrict. */
-        boolean meets(double[] boxes, int b) {
-            double near = 0;
-            double far = maxT;
-            for (int k = 0; k < 3; ++k) {
-                double t1 = (boxes[b + k] - origin[k]) * inverse[k];
-                double t2 = (boxes[b + 3 + k] - origin[k]) * inverse[k];
-                double low = Math.min(t1, t2);
-                double high = Math.max(t1, t2);
-                near = low > near ? low : near;
-                far = high < far ? high : far;
-            }
-            return near <= far;
-        }
+    private static boolean meets(double[] box, Point3D p0, double[] inverse, double maxT) {
+        return BoundingVolumeHierarchy.slabEntry(box[0], box[1], box[2], box[3], box[4], box[5], p0.getX(), p0.getY(),
+                p0.getZ(), inverse[0], inverse[1], inverse[2], maxT) != BoundingVolumeHierarchy.MISSED;
     }
 
     /** The renderer's path for the whole mesh (outside a hierarchy): the nearest closed triangle hit. */
