@@ -122,13 +122,9 @@ public final class JitteredGrid {
         if (requireNonNull(points, "sample points array").length < cells.length)
             throw new IllegalArgumentException("sample points array holds " + points.length
                     + " coordinates, the grid needs " + cells.length);
-        if (random instanceof SplitMix64 stream)
-            sampleUnchecked(stream, points);
-        else {
-            for (int i = 0; i < cells.length; ++i)
-                points[i] = random.nextDouble();
-            place(points);
-        }
+        for (int i = 0; i < cells.length; ++i)
+            points[i] = random.nextDouble();
+        place(points);
     }
 
     /**

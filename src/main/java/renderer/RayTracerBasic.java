@@ -239,7 +239,7 @@ public class RayTracerBasic extends RayTracerBase {
             double g = 0;
             double b = 0;
             for (int s = 0; s < count; ++s) {
-                Color color = calcGlobalEffect(square.ray(samples[2 * s], samples[2 * s + 1]), level, 1, kkx, state);
+                Color color = traceSecondary(square.ray(samples[2 * s], samples[2 * s + 1]), level, kkx, state);
                 r += color.getR();
                 g += color.getG();
                 b += color.getB();
@@ -252,8 +252,13 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     private Color calcGlobalEffect(Ray ray, int level, double kx, double kkx, ThreadState state) {
+        return traceSecondary(ray, level, kkx, state).scale(kx);
+    }
+
+    /** The colour a reflected, refracted or spread ray sees, one level down: the background when it hits nothing. */
+    private Color traceSecondary(Ray ray, int level, double kkx, ThreadState state) {
         GeoPoint geoPoint = findClosestIntersection(ray, state);
-        return (geoPoint == null ? scene.background : calcColor(geoPoint, ray, level - 1, kkx, state)).scale(kx);
+        return geoPoint == null ? scene.background : calcColor(geoPoint, ray, level - 1, kkx, state);
     }
 
     private Ray constructReflectedRay(Point3D point, Vector v, Vector n) {

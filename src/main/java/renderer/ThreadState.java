@@ -36,7 +36,7 @@ final class ThreadState {
     /** The pixel a lattice point's colour belongs to: its entry is current when it equals {@link #latticePixel}. */
     private int[] latticeStamps = new int[0];
     private int latticePixel;
-    private RayTracerBasic.LightSquare lightSquare;
+    private final RayTracerBasic.LightSquare lightSquare = new RayTracerBasic.LightSquare();
 
     /**
      * Creates the state of a thread.
@@ -139,8 +139,6 @@ final class ThreadState {
 
     /** {@return this thread's light square, set again for every lit point: the shadow path allocates nothing} */
     RayTracerBasic.LightSquare lightSquare() {
-        if (lightSquare == null)
-            lightSquare = new RayTracerBasic.LightSquare();
         return lightSquare;
     }
 

@@ -126,7 +126,7 @@ public final class SceneWriter {
         }
         List<Intersectable> bodies = scene.geometries.getGeometries();
         if (!bodies.isEmpty())
-            geometries(xml, scene.geometries);
+            geometries(xml, bodies);
         xml.close("scene");
         return xml.text.toString();
     }
@@ -179,8 +179,7 @@ public final class SceneWriter {
             xml.attribute("u", direction(light.getU())).attribute("v", direction(light.getV()));
     }
 
-    private static void geometries(Xml xml, Geometries geometries) {
-        List<Intersectable> bodies = geometries.getGeometries();
+    private static void geometries(Xml xml, List<? extends Intersectable> bodies) {
         if (bodies.isEmpty()) {
             xml.start("geometries").empty();
             return;
@@ -191,22 +190,15 @@ public final class SceneWriter {
         xml.close("geometries");
     }
 
-    /** Writes a mesh as a group of its triangles, each with the mesh's surface (a scene file names no OBJ file for it). */
-    private static void mesh(Xml xml, TriangleMesh mesh) {
-        xml.start("geometries").open();
-        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
-            body(xml, mesh.getTriangle(t));
-        xml.close("geometries");
-    }
-
     private static void body(Xml xml, Intersectable body) {
         Class<?> type = requireNonNull(body, "a body").getClass();
         if (type == Geometries.class) {
-            geometries(xml, (Geometries) body);
+            geometries(xml, ((Geometries) body).getGeometries());
             return;
         }
+        // a mesh: a group of its triangles, each with the mesh's surface (a scene file names no OBJ file for it)
         if (type == TriangleMesh.class) {
-            mesh(xml, (TriangleMesh) body);
+            geometries(xml, ((TriangleMesh) body).getTriangles());
             return;
         }
         if (type == Sphere.class) {

@@ -167,9 +167,12 @@ public final class Benchmark {
         Render render = new Render().setImageWriter(new ImageWriter(name, size, size, OUTPUT)).setCamera(camera)
                 .setRayTracer(rayTracer).setSoftShadows(true).setSqrtBeamNum(9).setMultithreading(threads);
         improve(name, camera, render);
-        double[] warm = new double[warmup];
-        for (int f = 0; f < warmup; ++f)
-            warm[f] = timedRender(render);
+        double first = 0;
+        for (int f = 0; f < warmup; ++f) {
+            double frame = timedRender(render);
+            if (f == 0)
+                first = frame;
+        }
         double[] seconds = new double[frames];
         long primary = 0;
         long shadow = 0;
@@ -187,7 +190,8 @@ public final class Benchmark {
             spread = rayTracer.getSpreadRaysCount() - spreadBefore;
         }
         render.writeToImage();
-        double first = warmup > 0 ? warm[0] : seconds[0];
+        if (warmup == 0)
+            first = seconds[0];
         double median = median(seconds);
         System.out.printf("%s: %d pixels, %d primary rays/frame, %d shadow rays/frame (%.1f %% in open bundles),"
                         + " first frame %.3f s (with the build), median %.3f s/frame (frames %s s),"

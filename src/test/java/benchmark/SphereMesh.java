@@ -1,6 +1,5 @@
 package benchmark;
 
-import java.util.ArrayList;
 import java.util.List;
 
 import geometries.Triangle;
@@ -50,11 +49,7 @@ public final class SphereMesh {
      * @throws IllegalArgumentException when the radius is not positive or rings or segments are too few
      */
     public static List<Triangle> triangles(Point3D center, double radius, int rings, int segments) {
-        TriangleMesh mesh = mesh(center, radius, rings, segments);
-        List<Triangle> triangles = new ArrayList<>(mesh.getTrianglesCount());
-        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
-            triangles.add(mesh.getTriangle(t));
-        return triangles;
+        return mesh(center, radius, rings, segments).getTriangles();
     }
 
     /**

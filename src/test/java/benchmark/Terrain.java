@@ -1,6 +1,5 @@
 package benchmark;
 
-import java.util.ArrayList;
 import java.util.List;
 
 import geometries.Triangle;
@@ -67,11 +66,7 @@ public final class Terrain {
      * @throws IllegalArgumentException when fewer than 2 triangles are wanted
      */
     public static List<Triangle> triangles(int triangles) {
-        TriangleMesh mesh = mesh(triangles);
-        List<Triangle> result = new ArrayList<>(mesh.getTrianglesCount());
-        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
-            result.add(mesh.getTriangle(t));
-        return result;
+        return mesh(triangles).getTriangles();
     }
 
     /**
