@@ -58,9 +58,10 @@ public final class BoundingVolumeHierarchy {
     private static final int MAX_GATHERED = 32;
     /**
      * The numbers a gathered mesh triangle keeps for the bundle's rays: the ten of its test (see
-     * {@link TriangleMesh#triangleData}) and its mesh's {@code kT}.
+     * {@link TriangleMesh#triangleData}), its mesh's {@code kT} and the rays' starts it lies behind
+     * ({@link ShadowFrustum#startsBehind}).
      */
-    private static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_DATA + 1;
+    private static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_DATA + 2;
 
     /** The name of the threads that share the build's work. */
     private static final String BUILD_THREADS = "hierarchy-build";
@@ -559,6 +560,8 @@ public final class BoundingVolumeHierarchy {
                     int d = GATHERED_TRIANGLE * slot;
                     mesh.triangleData(part, query.gatheredTriangles, d);
                     query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA] = mesh.getMaterial().getKt();
+                    query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA + 1] = query.frustum.startsBehind(
+                            query.gatheredTriangles, d);
                 }
                 query.gathered[slot] = part >= 0 ? -1 : b;
                 query.gatheredCount = slot + 1;
@@ -622,10 +625,12 @@ public final class BoundingVolumeHierarchy {
         if (query.gatheredCount < 0) {
             if (!walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK))
                 return 0;
-        } else
+        } else {
+            int start = query.frustum.startOf(ox, oy, oz, dx, dy, dz);
             for (int i = 0; i < query.gatheredCount; ++i)
-                if (!visitGathered(query, i, ox, oy, oz, dx, dy, dz, minK))
+                if (!visitGathered(query, i, start, ox, oy, oz, dx, dy, dz, minK))
                     return 0;
+        }
         return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
     }
 
@@ -975,16 +980,20 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * {@link #visitBody} in a transmittance walk for the body at a place of the query's gathered ones:
-     * a mesh's triangle is tested on the numbers {@link #gatherLeaf} kept, the same as the mesh's.
+     * a mesh's triangle is tested on the numbers {@link #gatherLeaf} kept, the same as the mesh's,
+     * unless it lies behind the ray's start.
+     *
+     * @param start where the ray starts, as the frustum's {@link ShadowFrustum#startOf} tells
      */
-    private boolean visitGathered(Query query, int i, double ox, double oy, double oz, double dx, double dy,
-                                  double dz, double minK) {
+    private boolean visitGathered(Query query, int i, int start, double ox, double oy, double oz, double dx,
+                                  double dy, double dz, double minK) {
         int b = query.gathered[i];
         if (b >= 0)
             return visit(owners[bodyOwner[b]], query, ox, oy, oz, dx, dy, dz, true, minK);
         double[] data = query.gatheredTriangles;
         int d = GATHERED_TRIANGLE * i;
-        return Triangle.intersect(data, d, ox, oy, oz, dx, dy, dz, query.maxT) == Geometry.NO_HIT
+        return ((int) data[d + TriangleMesh.TRIANGLE_DATA + 1] & start) != 0
+                || Triangle.intersect(data, d, ox, oy, oz, dx, dy, dz, query.maxT) == Geometry.NO_HIT
                 || dim(query, data[d + TriangleMesh.TRIANGLE_DATA], minK);
     }
 

@@ -18,16 +18,36 @@ public final class ShadowFrustum {
     private static final double MARGIN = 1e-7;
     /** How near, relative to the pyramid's size, an inner point may come to a face before the pyramid counts as flat. */
     private static final double FLAT = 1e-9;
+    /** What {@link #startOf} answers for a ray that starts at p + n and leaves to n's side. */
+    static final int ABOVE = 1;
+    /** What {@link #startOf} answers for a ray that starts at p − n and leaves to the other side. */
+    static final int BELOW = 2;
+    /** The pyramid's faces: four sides and the base. */
     private static final int PLANES = 5;
 
-    /** The four sides and the base, as (unit outward normal, offset): outside where n·x − offset > margin. */
-    private final double[] planes = new double[4 * PLANES];
+    /**
+     * The four sides and the base, and a back face when one is set ({@link #setBackFace}), as (unit
+     * outward normal, offset): outside where n·x − offset > margin.
+     */
+    private final double[] planes = new double[4 * (PLANES + 1)];
+    /** The number of planes in {@link #planes} that set things aside: the pyramid's faces, and the back face if set. */
+    private int planesCount;
     /** The apex and the four corners of the base, three coordinates each. */
     private final double[] vertices = new double[15];
     /** The box around the vertices, {minX, minY, minZ, maxX, maxY, maxZ}. */
     private final double[] hull = new double[6];
     /** The thickness plus the margin: how far outside a face a box or plane must be. */
     private double margin;
+    /** The margin alone, for rounding: how far behind a ray's start a triangle must be ({@link #startsBehind}). */
+    private double rounding;
+    /** Whether {@link #setStarts} was called since the last {@link #set}, and the point p and offset n it was given. */
+    private boolean startsSet;
+    private double startX;
+    private double startY;
+    private double startZ;
+    private double offsetX;
+    private double offsetY;
+    private double offsetZ;
     /** The least distance of an inner point from a face, below which the pyramid counts as flat. */
     private double flatness;
     /** Whether the last {@link #set} succeeded: until one does, every box and plane may meet the pyramid. */
@@ -67,7 +87,9 @@ public final class ShadowFrustum {
         setVertex(3, cx - ax - bx, cy - ay - by, cz - az - bz);
         setVertex(4, cx + ax - bx, cy + ay - by, cz + az - bz);
         double size = setHull();
-        margin = MARGIN * size + thickness;
+        rounding = MARGIN * size;
+        margin = rounding + thickness;
+        startsSet = false;
         flatness = FLAT * size;
         valid = false;
         for (int side = 0; side < 4; ++side)
@@ -77,7 +99,43 @@ public final class ShadowFrustum {
         double ny = az * bx - ax * bz;
         double nz = ax * by - ay * bx;
         valid = setPlane(4, nx, ny, nz, nx * cx + ny * cy + nz * cz, ox, oy, oz);
+        planesCount = PLANES;
         return valid;
+    }
+
+    /**
+     * Adds a back face to the pyramid of the last {@link #set}: the plane through the apex across a
+     * direction, when the whole base lies ahead of it along that direction by more than the margin.
+     * The pyramid lies ahead of that plane, so what lies behind it by more than the thickness and
+     * margin meets no ray: the surface a bundle of shadow rays leaves, seen from an apex a little off
+     * it, with the normal as the direction. Plane-by-plane tests miss such a body when it lies
+     * around the apex, outside the pyramid but not outside any one of its other faces. The next
+     * {@link #set} takes the back face away.
+     *
+     * @param nx the direction, x
+     * @param ny the direction, y
+     * @param nz the direction, z
+     * @return true when the back face was added; false, adding nothing, when the pyramid is not set
+     *         (or flat), the direction is not a finite non-zero vector or the base does not lie ahead
+     */
+    public boolean setBackFace(double nx, double ny, double nz) {
+        double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        if (!valid || !(length > 0) || length == Double.POSITIVE_INFINITY)
+            return false;
+        double ux = nx / length;
+        double uy = ny / length;
+        double uz = nz / length;
+        double[] v = vertices;
+        for (int i = 3; i < 15; i += 3)
+            if (!(ux * (v[i] - v[0]) + uy * (v[i + 1] - v[1]) + uz * (v[i + 2] - v[2]) > margin))
+                return false;
+        int p = 4 * PLANES;
+        planes[p] = -ux;
+        planes[p + 1] = -uy;
+        planes[p + 2] = -uz;
+        planes[p + 3] = -(ux * v[0] + uy * v[1] + uz * v[2]);
+        planesCount = PLANES + 1;
+        return true;
     }
 
     /**
@@ -146,6 +204,76 @@ public final class ShadowFrustum {
     }
 
     /**
+     * Tells where the bundle's rays start, when they leave a surface on both sides of it (the pyramid's
+     * base straddles the surface's plane, and no back face can be set): a ray that leaves to the side
+     * a vector n points to starts at p + n, one that leaves to the other side at p − n. A triangle
+     * of the surface around p then lies behind each of the two starts, and the rays from there need
+     * not test it ({@link #startsBehind}, {@link #startOf}). The next {@link #set} forgets the starts.
+     *
+     * @param px the point p the rays leave, x
+     * @param py the same for y
+     * @param pz the same for z
+     * @param nx the offset n of the starts, x
+     * @param ny the same for y
+     * @param nz the same for z
+     */
+    public void setStarts(double px, double py, double pz, double nx, double ny, double nz) {
+        startX = px;
+        startY = py;
+        startZ = pz;
+        offsetX = nx;
+        offsetY = ny;
+        offsetZ = nz;
+        startsSet = nx != 0 || ny != 0 || nz != 0;
+    }
+
+    /**
+     * Where a ray of the bundle starts, as {@link #setStarts} tells them apart.
+     *
+     * @return {@link #ABOVE} for a ray from p + n that leaves to n's side, {@link #BELOW} for a ray
+     *         from p − n that leaves to the other side, else 0 (also when no starts are set)
+     */
+    int startOf(double ox, double oy, double oz, double dx, double dy, double dz) {
+        if (!startsSet)
+            return 0;
+        double side = dx * offsetX + dy * offsetY + dz * offsetZ;
+        if (side > 0 && ox == startX + offsetX && oy == startY + offsetY && oz == startZ + offsetZ)
+            return ABOVE;
+        if (side < 0 && ox == startX - offsetX && oy == startY - offsetY && oz == startZ - offsetZ)
+            return BELOW;
+        return 0;
+    }
+
+    /**
+     * The starts ({@link #setStarts}) a triangle lies behind, grown as the renderer's test takes it
+     * (see {@link #meetsTriangle}), by more than a rounding margin: behind the plane through p + n
+     * across n, which a ray from there leaves forward, or behind the one through p − n across −n. A
+     * ray from such a start cannot meet the triangle.
+     *
+     * @param data   the triangle as its test takes it: p1, the edges p2 − p1 and p3 − p1
+     * @param offset where the nine numbers start
+     * @return {@link #ABOVE}, {@link #BELOW}, both or 0 (always 0 when no starts are set)
+     */
+    int startsBehind(double[] data, int offset) {
+        if (!startsSet)
+            return 0;
+        double nx = offsetX;
+        double ny = offsetY;
+        double nz = offsetZ;
+        double h = (data[offset] - startX) * nx + (data[offset + 1] - startY) * ny + (data[offset + 2] - startZ) * nz;
+        double f = data[offset + 3] * nx + data[offset + 4] * ny + data[offset + 5] * nz;
+        double g = data[offset + 6] * nx + data[offset + 7] * ny + data[offset + 8] * nz;
+        double tau = Triangle.BARYCENTRIC_TOLERANCE;
+        double h1 = h - tau * (f + g);
+        double h2 = h + f + tau * (2 * f - g);
+        double h3 = h + g + tau * (2 * g - f);
+        double square = nx * nx + ny * ny + nz * nz;
+        double slack = rounding * Math.sqrt(square);
+        int behind = Math.max(h1, Math.max(h2, h3)) < square - slack ? ABOVE : 0;
+        return Math.min(h1, Math.min(h2, h3)) > slack - square ? behind | BELOW : behind;
+    }
+
+    /**
      * Whether an axis-aligned box may meet the pyramid.
      *
      * @param boxes  an array of boxes, {minX, minY, minZ, maxX, maxY, maxZ} each
@@ -179,19 +307,22 @@ public final class ShadowFrustum {
         double[] h = hull;
         if (x0 > h[3] + m || y0 > h[4] + m || z0 > h[5] + m || x1 < h[0] - m || y1 < h[1] - m || z1 < h[2] - m)
             return false;
-        double[] pl = planes;
-        for (int p = 0; p < 4 * PLANES; p += 4) {
-            double nx = pl[p];
-            double ny = pl[p + 1];
-            double nz = pl[p + 2];
-            // the box's corner farthest inside the plane
-            double x = nx > 0 ? x0 : x1;
-            double y = ny > 0 ? y0 : y1;
-            double z = nz > 0 ? z0 : z1;
-            if (nx * x + ny * y + nz * z - pl[p + 3] > m)
+        for (int p = 0; p < 4 * PLANES; p += 4)
+            if (!boxInside(x0, y0, z0, x1, y1, z1, p))
                 return false;
-        }
-        return true;
+        return planesCount == PLANES || boxInside(x0, y0, z0, x1, y1, z1, 4 * PLANES);
+    }
+
+    /**
+     * Whether a box is inside a plane of {@link #planes}, or outside it by no more than the margin:
+     * whether its corner farthest inside is.
+     */
+    private boolean boxInside(double x0, double y0, double z0, double x1, double y1, double z1, int p) {
+        double[] pl = planes;
+        double nx = pl[p];
+        double ny = pl[p + 1];
+        double nz = pl[p + 2];
+        return nx * (nx > 0 ? x0 : x1) + ny * (ny > 0 ? y0 : y1) + nz * (nz > 0 ? z0 : z1) - pl[p + 3] <= margin;
     }
 
     /**
@@ -212,7 +343,7 @@ public final class ShadowFrustum {
         if (!valid)
             return true;
         double[] pl = planes;
-        for (int p = 0; p < 4 * PLANES; p += 4)
+        for (int p = 0; p < 4 * planesCount; p += 4)
             if (outside(pl[p], pl[p + 1], pl[p + 2], pl[p + 3], vertices, p1, p2, p3))
                 return false;
         return true;

@@ -483,6 +483,11 @@ public class RayTracerBasic extends RayTracerBase {
             if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
                     cz + side * nz, ax, ay, az, bx, by, bz, thickness))
                 return Bundle.WHOLE;
+            // the surface around the point lies behind the rays' starts
+            if (side != 0)
+                frustum.setBackFace(side * nx, side * ny, side * nz);
+            else
+                frustum.setStarts(px, py, pz, nx, ny, nz);
             if (!bvh.gather(query))
                 return Bundle.OPEN;
             return query.isSubtreeGathered() ? Bundle.PACKET : Bundle.GATHERED;
