@@ -485,7 +485,8 @@ public final class BoundingVolumeHierarchy {
      * Gathers the bodies a bundle of shadow rays may meet, for {@link #gatheredTransmittance}: the
      * unbounded bodies and the tree's bodies that may meet the query's
      * {@link Query#getFrustum() frustum} (set it first): the planes of unbounded ones and of
-     * polygons must cross it, a triangle must not lie outside one of its faces, and the boxes of
+     * polygons must cross it, a triangle must not lie outside one of its faces (its back face among
+     * them) nor behind both of the rays' starts ({@link ShadowFrustum#setStarts}), and the boxes of
      * bounded ones must meet it. When more than a few of the tree's
      * bodies meet it, their smallest subtree is kept instead. A brute-force {@link #scan} gathers
      * every body.
@@ -604,8 +605,10 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * {@link #transmittance} for a ray of the bundle of the last {@link #gather}: only the gathered
-     * bodies are tested, and the answer is the same (up to the order in which the {@code kT} of
-     * several transparent bodies are multiplied, which may move its last bit).
+     * bodies are tested (a gathered triangle not when it lies behind the ray's start), and the answer
+     * is the same (up to the order in which the {@code kT} of several transparent bodies are
+     * multiplied, which may move its last bit). A ray from neither of the frustum's starts, when they
+     * are set, is traced alone through the whole hierarchy.
      *
      * @param ox    the ray's origin, x
      * @param oy    the ray's origin, y
@@ -620,13 +623,18 @@ public final class BoundingVolumeHierarchy {
      */
     public double gatheredTransmittance(double ox, double oy, double oz, double dx, double dy, double dz,
                                         double maxT, double minK, Query query) {
+        int start = 0;
+        if (query.frustum.hasStarts()) {
+            start = query.frustum.startOf(ox, oy, oz, dx, dy, dz);
+            if (start == 0) // the gather left out bodies that only the rays from the starts miss
+                return transmittance(ox, oy, oz, dx, dy, dz, maxT, minK, query);
+        }
         if (!throughGatheredUnbounded(query, ox, oy, oz, dx, dy, dz, maxT, minK))
             return 0;
         if (query.gatheredCount < 0) {
             if (!walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK))
                 return 0;
         } else {
-            int start = query.frustum.startOf(ox, oy, oz, dx, dy, dz);
             for (int i = 0; i < query.gatheredCount; ++i)
                 if (!visitGathered(query, i, start, ox, oy, oz, dx, dy, dz, minK))
                     return 0;

@@ -206,9 +206,11 @@ public final class ShadowFrustum {
     /**
      * Tells where the bundle's rays start, when they leave a surface on both sides of it (the pyramid's
      * base straddles the surface's plane, and no back face can be set): a ray that leaves to the side
-     * a vector n points to starts at p + n, one that leaves to the other side at p − n. A triangle
-     * of the surface around p then lies behind each of the two starts, and the rays from there need
-     * not test it ({@link #startsBehind}, {@link #startOf}). The next {@link #set} forgets the starts.
+     * a vector n points to starts at p + n, one that leaves to the other side at p − n, one along the
+     * surface at p. A triangle of the surface around p then lies behind each of the two starts, and
+     * the rays from there need not test it ({@link #startsBehind}, {@link #startOf}): a hierarchy
+     * leaves it out of the bundle ({@link #behindStarts}) and traces a ray from neither start alone.
+     * The next {@link #set} forgets the starts.
      *
      * @param px the point p the rays leave, x
      * @param py the same for y
@@ -257,17 +259,52 @@ public final class ShadowFrustum {
     int startsBehind(double[] data, int offset) {
         if (!startsSet)
             return 0;
-        double nx = offsetX;
-        double ny = offsetY;
-        double nz = offsetZ;
-        double h = (data[offset] - startX) * nx + (data[offset + 1] - startY) * ny + (data[offset + 2] - startZ) * nz;
-        double f = data[offset + 3] * nx + data[offset + 4] * ny + data[offset + 5] * nz;
-        double g = data[offset + 6] * nx + data[offset + 7] * ny + data[offset + 8] * nz;
+        return startsBehind(along(data[offset] - startX, data[offset + 1] - startY, data[offset + 2] - startZ),
+                along(data[offset + 3], data[offset + 4], data[offset + 5]),
+                along(data[offset + 6], data[offset + 7], data[offset + 8]));
+    }
+
+    /**
+     * Whether a triangle lies behind both starts ({@link #setStarts}), as {@link #startsBehind} takes
+     * it: then only a ray that starts at neither (one along the surface) may meet it.
+     *
+     * @param vertices the coordinates of the vertices, three doubles each
+     * @param p1       where the first vertex's x lies in vertices
+     * @param p2       where the second vertex's x lies
+     * @param p3       where the third vertex's x lies
+     * @return true when it lies behind both (never when no starts are set)
+     */
+    boolean behindStarts(double[] vertices, int p1, int p2, int p3) {
+        if (!startsSet)
+            return false;
+        double x = vertices[p1];
+        double y = vertices[p1 + 1];
+        double z = vertices[p1 + 2];
+        return startsBehind(along(x - startX, y - startY, z - startZ),
+                along(vertices[p2] - x, vertices[p2 + 1] - y, vertices[p2 + 2] - z),
+                along(vertices[p3] - x, vertices[p3 + 1] - y, vertices[p3 + 2] - z)) == (ABOVE | BELOW);
+    }
+
+    /** {@return whether starts are set ({@link #setStarts}): a ray from neither then tests every body} */
+    boolean hasStarts() {
+        return startsSet;
+    }
+
+    /** {@return the dot product of a vector with the starts' offset n} */
+    private double along(double x, double y, double z) {
+        return x * offsetX + y * offsetY + z * offsetZ;
+    }
+
+    /**
+     * The starts a triangle lies behind, from its first vertex's height h above p along n and its
+     * edges' heights f and g (all times |n|), its vertices grown by the barycentric tolerance.
+     */
+    private int startsBehind(double h, double f, double g) {
         double tau = Triangle.BARYCENTRIC_TOLERANCE;
         double h1 = h - tau * (f + g);
         double h2 = h + f + tau * (2 * f - g);
         double h3 = h + g + tau * (2 * g - f);
-        double square = nx * nx + ny * ny + nz * nz;
+        double square = offsetX * offsetX + offsetY * offsetY + offsetZ * offsetZ;
         double slack = rounding * Math.sqrt(square);
         int behind = Math.max(h1, Math.max(h2, h3)) < square - slack ? ABOVE : 0;
         return Math.min(h1, Math.min(h2, h3)) > slack - square ? behind | BELOW : behind;
@@ -343,7 +380,10 @@ public final class ShadowFrustum {
         if (!valid)
             return true;
         double[] pl = planes;
-        for (int p = 0; p < 4 * planesCount; p += 4)
+        int back = 4 * PLANES;
+        if (planesCount > PLANES && outside(pl[back], pl[back + 1], pl[back + 2], pl[back + 3], vertices, p1, p2, p3))
+            return false; // first: it sets aside the many triangles around the apex
+        for (int p = 0; p < 4 * PLANES; p += 4)
             if (outside(pl[p], pl[p + 1], pl[p + 2], pl[p + 3], vertices, p1, p2, p3))
                 return false;
         return true;

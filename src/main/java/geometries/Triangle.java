@@ -124,7 +124,8 @@ public class Triangle extends Polygon {
      */
     @Override
     boolean mayMeet(ShadowFrustum frustum) {
-        return super.mayMeet(frustum) && frustum.meetsTriangle(vertexCoordinates, 0, 3, 6);
+        return !frustum.behindStarts(vertexCoordinates, 0, 3, 6) && super.mayMeet(frustum)
+                && frustum.meetsTriangle(vertexCoordinates, 0, 3, 6);
     }
 
     /**

@@ -417,6 +417,8 @@ public final class TriangleMesh extends Geometry {
         int a = corner(t, 0);
         int b = corner(t, 1);
         int c = corner(t, 2);
+        if (frustum.behindStarts(vertices, a, b, c))
+            return false;
         double ux = vertices[b] - vertices[a];
         double uy = vertices[b + 1] - vertices[a + 1];
         double uz = vertices[b + 2] - vertices[a + 2];
