@@ -58,10 +58,9 @@ public final class BoundingVolumeHierarchy {
     private static final int MAX_GATHERED = 32;
     /**
      * The numbers a gathered mesh triangle keeps for the bundle's rays: the ten of its test (see
-     * {@link TriangleMesh#triangleData}), its mesh's {@code kT} and the rays' starts it lies behind
-     * ({@link ShadowFrustum#startsBehind}).
+     * {@link TriangleMesh#triangleData}) and its mesh's {@code kT}.
      */
-    private static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_DATA + 2;
+    private static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_DATA + 1;
 
     /** The name of the threads that share the build's work. */
     private static final String BUILD_THREADS = "hierarchy-build";
@@ -132,6 +131,13 @@ public final class BoundingVolumeHierarchy {
         private final double[] gatheredTriangles = new double[GATHERED_TRIANGLE * MAX_GATHERED];
         /** How many bodies {@link #gather} found, or −1 when they were too many (a subtree was kept). */
         private int gatheredCount;
+        /**
+         * Per start of a ray, as the frustum's {@link ShadowFrustum#startOf} tells them (0 for a ray from
+         * neither or when no starts are set), the places in {@link #gathered} of the bodies such a ray
+         * tests, in order (not the triangles behind that start), and how many.
+         */
+        private final int[][] startLists = new int[3][MAX_GATHERED];
+        private final int[] startCounts = new int[3];
         /** When {@link #gather} found too many bodies: the node below which all of them lie. */
         private int subtree;
         /** The unbounded bodies {@link #gather} found, and how many. */
@@ -502,6 +508,7 @@ public final class BoundingVolumeHierarchy {
                 query.gatheredUnbounded[found++] = body;
         query.unboundedCount = found;
         query.gatheredCount = 0;
+        Arrays.fill(query.startCounts, 0);
         if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0))
             gatherTree(query);
         return found > 0 || query.gatheredCount != 0 || others.length > 0;
@@ -561,13 +568,25 @@ public final class BoundingVolumeHierarchy {
                     int d = GATHERED_TRIANGLE * slot;
                     mesh.triangleData(part, query.gatheredTriangles, d);
                     query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA] = mesh.getMaterial().getKt();
-                    query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA + 1] = query.frustum.startsBehind(
-                            query.gatheredTriangles, d);
                 }
                 query.gathered[slot] = part >= 0 ? -1 : b;
                 query.gatheredCount = slot + 1;
+                listByStarts(query, slot, part >= 0 ? query.frustum.startsBehind(query.gatheredTriangles,
+                        GATHERED_TRIANGLE * slot) : 0);
             }
         return true;
+    }
+
+    /**
+     * Lists a gathered body for the rays from each start it does not lie behind.
+     *
+     * @param slot   its place among the gathered bodies
+     * @param behind the starts it lies behind, as {@link ShadowFrustum#startsBehind} tells
+     */
+    private static void listByStarts(Query query, int slot, int behind) {
+        for (int start = 0; start < query.startLists.length; ++start)
+            if ((behind & start) == 0)
+                query.startLists[start][query.startCounts[start]++] = slot;
     }
 
     /**
@@ -635,8 +654,9 @@ public final class BoundingVolumeHierarchy {
             if (!walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK))
                 return 0;
         } else {
-            for (int i = 0; i < query.gatheredCount; ++i)
-                if (!visitGathered(query, i, start, ox, oy, oz, dx, dy, dz, minK))
+            int[] list = query.startLists[start];
+            for (int k = 0; k < query.startCounts[start]; ++k)
+                if (!visitGathered(query, list[k], ox, oy, oz, dx, dy, dz, minK))
                     return 0;
         }
         return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
@@ -988,20 +1008,16 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * {@link #visitBody} in a transmittance walk for the body at a place of the query's gathered ones:
-     * a mesh's triangle is tested on the numbers {@link #gatherLeaf} kept, the same as the mesh's,
-     * unless it lies behind the ray's start.
-     *
-     * @param start where the ray starts, as the frustum's {@link ShadowFrustum#startOf} tells
+     * a mesh's triangle is tested on the numbers {@link #gatherLeaf} kept, the same as the mesh's.
      */
-    private boolean visitGathered(Query query, int i, int start, double ox, double oy, double oz, double dx,
-                                  double dy, double dz, double minK) {
+    private boolean visitGathered(Query query, int i, double ox, double oy, double oz, double dx, double dy,
+                                  double dz, double minK) {
         int b = query.gathered[i];
         if (b >= 0)
             return visit(owners[bodyOwner[b]], query, ox, oy, oz, dx, dy, dz, true, minK);
         double[] data = query.gatheredTriangles;
         int d = GATHERED_TRIANGLE * i;
-        return ((int) data[d + TriangleMesh.TRIANGLE_DATA + 1] & start) != 0
-                || Triangle.intersect(data, d, ox, oy, oz, dx, dy, dz, query.maxT) == Geometry.NO_HIT
+        return Triangle.intersect(data, d, ox, oy, oz, dx, dy, dz, query.maxT) == Geometry.NO_HIT
                 || dim(query, data[d + TriangleMesh.TRIANGLE_DATA], minK);
     }
 
