@@ -7,12 +7,14 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static primitives.Util.alignZero;
 import static testutil.TestAssertions.assertMessage;
 import static testutil.TestRandom.edgeOrInner;
 import static testutil.TestRandom.randomPoint;
 import static testutil.TestRandom.randomUnit;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import java.util.function.Supplier;
@@ -1517,31 +1519,34 @@ class BoundingVolumeHierarchyTest {
                 rays.add(ray);
                 distances.add(distance);
             }
-            assertPacket(bvh, query, treeQuery, rays, distances, opaque, bundleLabel);
+            assertPacket(bvh, query, bvh, treeQuery, rays, distances, opaque ? 0 : 1e-12, bundleLabel);
         }
     }
 
     /**
      * Asserts that the rays of a bundle traced as one packet, after its gather, each get the
-     * transmittance the tree gives them alone, with the cut-off and without.
+     * transmittance a reference (the tree itself, or the scan) gives them alone, with the cut-off and
+     * without.
      *
-     * @param bvh       the hierarchy
-     * @param query     the scratch space, as the gather left it
-     * @param treeQuery another scratch space, for the rays alone
-     * @param rays      the rays
-     * @param distances their distances to the square
-     * @param opaque    whether the answers must be equal to the bit (else within 1e-12)
-     * @param label     the bundle's label
+     * @param bvh            the hierarchy
+     * @param query          the scratch space, as the gather left it
+     * @param reference      the hierarchy (or scan) that traces the rays alone
+     * @param referenceQuery another scratch space, for the rays alone
+     * @param rays           the rays
+     * @param distances      their distances to the square
+     * @param delta          the tolerance (0: equal to the bit)
+     * @param label          the bundle's label
      */
-    private static void assertPacket(BoundingVolumeHierarchy bvh, Query query, Query treeQuery, List<Ray> rays,
-                                     List<Double> distances, boolean opaque, Supplier<String> label) {
+    private static void assertPacket(BoundingVolumeHierarchy bvh, Query query, BoundingVolumeHierarchy reference,
+                                     Query referenceQuery, List<Ray> rays, List<Double> distances, double delta,
+                                     Supplier<String> label) {
         for (double minK : new double[] { MIN_K, 0 }) {
             fillPacket(query, rays, distances);
             bvh.gatheredTransmittances(minK, query);
             for (int r = 0; r < rays.size(); ++r) {
-                double expected = transmittance(bvh, rays.get(r), distances.get(r), minK, treeQuery);
+                double expected = transmittance(reference, rays.get(r), distances.get(r), minK, referenceQuery);
                 int number = r;
-                assertEquals(expected, query.getTransmittance(r), opaque ? 0 : 1e-12,
+                assertEquals(expected, query.getTransmittance(r), delta,
                         () -> label.get() + " packet ray " + number + " " + rays.get(number) + " (minK " + minK + ")");
             }
         }
@@ -2186,6 +2191,329 @@ class BoundingVolumeHierarchyTest {
         assertTrue(ballBvh.gather(ballQuery), "TC22: after a refused set the ball must be gathered");
         assertRay(0, ballBvh, ballQuery, up, below, "TC22: the ray through the ball");
         assertRay(1, ballBvh, ballQuery, new Point3D(3, 0, 5), new Point3D(3, 0, -1), "TC22: a ray past the ball");
+    }
+
+    // ---------------------------------------------------------------- bundles leaving a surface
+
+    /** How far the light's square must lie off the tangent plane for one side (LightSquare.SIDE_MARGIN). */
+    private static final double SIDE_MARGIN = 1e-6;
+
+    /**
+     * A bumpy height field as one mesh: z = 0.5·sin(1.3x)·cos(0.9y) over [−6, 6]², 24 × 24 cells of
+     * two triangles each (1152 triangles), their normals up.
+     *
+     * @return the mesh
+     */
+    private static TriangleMesh bumpyMesh() {
+        int cells = 24;
+        double[] vertices = new double[3 * (cells + 1) * (cells + 1)];
+        for (int i = 0; i <= cells; ++i)
+            for (int j = 0; j <= cells; ++j) {
+                double x = -6 + 12.0 * i / cells;
+                double y = -6 + 12.0 * j / cells;
+                int v = 3 * (i * (cells + 1) + j);
+                vertices[v] = x;
+                vertices[v + 1] = y;
+                vertices[v + 2] = 0.5 * Math.sin(1.3 * x) * Math.cos(0.9 * y);
+            }
+        int[] indices = new int[6 * cells * cells];
+        int k = 0;
+        for (int i = 0; i < cells; ++i)
+            for (int j = 0; j < cells; ++j) {
+                int v00 = i * (cells + 1) + j;
+                int v10 = v00 + cells + 1;
+                int[] corners = { v00, v10, v10 + 1, v00, v10 + 1, v00 + 1 };
+                System.arraycopy(corners, 0, indices, k, 6);
+                k += 6;
+            }
+        return new TriangleMesh(vertices, indices);
+    }
+
+    /**
+     * What the bundles leaving a mesh's surface did: how many of each kind, and how often a gathered
+     * triangle was skipped for a ray by its start.
+     */
+    private static final class StartCounts {
+        /** bundles whose square straddles the tangent plane: the starts set. */
+        private int straddling;
+        /** bundles whose square lies on one side: the back face set. */
+        private int oneSide;
+        /** straddling bundles that kept at most 32 bodies, some mesh triangle behind a start among them. */
+        private int straddlingSkipping;
+        /** (ray, gathered triangle) pairs skipped by the start. */
+        private int skipped;
+        private int rays;
+        private int darkened;
+    }
+
+    /**
+     * Sets a bundle leaving a surface point as the renderer's light square does (LightSquare.gather):
+     * when the square lies on one side of the tangent plane the pyramid starts DELTA off it on that
+     * side and gets the back face across the normal; otherwise it starts at the point, DELTA thick,
+     * and the starts p ± n are set; then gathers.
+     *
+     * @param bvh   the hierarchy
+     * @param query the scratch space
+     * @param p     the point on the surface
+     * @param n     the surface's normal scaled to DELTA
+     * @param c     the centre of the square
+     * @param a     half of one side (as long as b)
+     * @param b     half of the other side
+     * @return {the side the rays all leave to (1 or −1, 0 when the square straddles the plane), 1 when
+     *         gather found something else 0}; null for a flat pyramid
+     */
+    private static int[] gatherLeaving(BoundingVolumeHierarchy bvh, Query query, Point3D p, Vector n, Point3D c,
+                                       Vector a, Vector b) {
+        Vector w = c.subtract(p);
+        double centre = n.dotProduct(w);
+        double spread = Math.abs(n.dotProduct(a)) + Math.abs(n.dotProduct(b));
+        double margin = SIDE_MARGIN * Ray.DELTA * (w.length() + 2 * a.length());
+        int side = centre - spread > margin ? 1 : centre + spread < -margin ? -1 : 0;
+        Point3D apex = side == 0 ? p : p.add(n.scale(side));
+        Point3D base = side == 0 ? c : c.add(n.scale(side));
+        ShadowFrustum frustum = query.getFrustum();
+        if (!frustum.set(apex.getX(), apex.getY(), apex.getZ(), base.getX(), base.getY(), base.getZ(), a.getX(),
+                a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), side == 0 ? Ray.DELTA : 0))
+            return null;
+        if (side != 0)
+            assertTrue(frustum.setBackFace(side * n.getX(), side * n.getY(), side * n.getZ()),
+                    "the base of a bundle leaving on one side must lie ahead of its back face");
+        else
+            frustum.setStarts(p.getX(), p.getY(), p.getZ(), n.getX(), n.getY(), n.getZ());
+        return new int[] { side, bvh.gather(query) ? 1 : 0 };
+    }
+
+    /**
+     * The shadow rays of a bundle as the renderer traces them (LightSquare.traceSamples): from the
+     * point to random points of the square, each starting DELTA off the surface on the side it leaves to.
+     *
+     * @param rnd   the generator
+     * @param p     the point on the surface
+     * @param n     the surface's normal scaled to DELTA
+     * @param c     the centre of the square
+     * @param a     half of one side
+     * @param b     half of the other side
+     * @param count the number of rays
+     * @return the rays, {ox, oy, oz, dx, dy, dz, distance} each
+     */
+    private static double[][] shadowRays(Random rnd, Point3D p, Vector n, Point3D c, Vector a, Vector b, int count) {
+        double[][] rays = new double[count][];
+        for (int r = 0; r < count; ++r) {
+            Point3D target = squarePoint(rnd, c, a, b);
+            double dx = target.getX() - p.getX();
+            double dy = target.getY() - p.getY();
+            double dz = target.getZ() - p.getZ();
+            double distance = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            double inverse = 1 / distance;
+            dx *= inverse;
+            dy *= inverse;
+            dz *= inverse;
+            double side = alignZero(n.getX() * dx + n.getY() * dy + n.getZ() * dz);
+            double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
+            rays[r] = new double[] { p.getX() + offset * n.getX(), p.getY() + offset * n.getY(),
+                    p.getZ() + offset * n.getZ(), dx, dy, dz, distance };
+        }
+        return rays;
+    }
+
+    /**
+     * A point of a mesh's triangle: p1 + u·(p2 − p1) + v·(p3 − p1).
+     *
+     * @param mesh the mesh
+     * @param t    the triangle's index
+     * @param u    the weight of the first edge
+     * @param v    the weight of the second edge (u + v at most 1 for a point on the triangle)
+     * @return the point
+     */
+    private static Point3D pointOnTriangle(TriangleMesh mesh, int t, double u, double v) {
+        double[] data = new double[TriangleMesh.TRIANGLE_DATA];
+        mesh.triangleData(t, data, 0);
+        return new Point3D(data[0] + u * data[3] + v * data[6], data[1] + u * data[4] + v * data[7],
+                data[2] + u * data[5] + v * data[8]);
+    }
+
+    /**
+     * A random bundle leaving a random point of a mesh's triangle: its square straddling the tangent
+     * plane (even bundles: beside the point, tilted across the plane) or lying on one side of it (odd
+     * bundles: over it, a quarter of them under it). Every ray's gathered transmittance, after the
+     * gather as the renderer sets it, equals the scan's transmittance, exactly, with the cut-off and
+     * without, and so does the packet's; and no gathered triangle skipped for a ray by its start is
+     * hit by it.
+     *
+     * @param rnd    the generator
+     * @param mesh   the mesh to start on
+     * @param bvh    the hierarchy of the scene
+     * @param scan   the scan of the scene
+     * @param bundle the bundle's number
+     * @param counts the counters to add to
+     * @param tc     the test-case label
+     */
+    private static void checkLeaving(Random rnd, TriangleMesh mesh, BoundingVolumeHierarchy bvh,
+                                     BoundingVolumeHierarchy scan, int bundle, StartCounts counts, String tc) {
+        Query query = bvh.newQuery();
+        Query scanQuery = scan.newQuery();
+        int t = rnd.nextInt(mesh.getTrianglesCount());
+        double u = rnd.nextDouble();
+        Point3D p = pointOnTriangle(mesh, t, u, (1 - u) * rnd.nextDouble());
+        Vector normal = mesh.getNormal(t);
+        Vector n = normal.scale(Ray.DELTA / normal.length());
+        Vector along = perpendicular(rnd, normal);
+        double distance = 2 + 20 * rnd.nextDouble();
+        Point3D c;
+        Vector a;
+        if (bundle % 2 == 0) { // beside the point, a side of the square across the tangent plane
+            c = p.add(along.scale(distance)).add(normal.scale(0.05 * distance * (2 * rnd.nextDouble() - 1)));
+            double tilt = 0.3 + rnd.nextDouble();
+            a = normal.scale(Math.cos(tilt)).add(normal.crossProduct(along).scale(Math.sin(tilt)));
+        } else { // over (or under) the point
+            double side = bundle % 4 == 1 || rnd.nextInt(2) == 0 ? 1 : -1;
+            c = p.add(normal.scale(side * distance)).add(along.scale(2 * distance * rnd.nextDouble()));
+            a = perpendicular(rnd, c.subtract(p));
+        }
+        Vector b = a.crossProduct(c.subtract(p)).normalize();
+        double half = distance * (bundle % 2 == 0 ? 0.05 + 0.2 * rnd.nextDouble() : 0.01 + 0.1 * rnd.nextDouble());
+        a = a.normalize().scale(half);
+        b = b.scale(half);
+        int[] gathered = gatherLeaving(bvh, query, p, n, c, a, b);
+        if (gathered == null)
+            return;
+        if (gathered[0] == 0)
+            ++counts.straddling;
+        else
+            ++counts.oneSide;
+        ShadowFrustum frustum = query.getFrustum();
+        double[][] rays = shadowRays(rnd, p, n, c, a, b, 30);
+        String bundleLabel = tc + " bundle " + bundle + " (p " + p + ", n " + n + ", c " + c + ", a " + a + ", b " + b
+                + ", side " + gathered[0] + ", gathered " + gathered[1] + ")";
+        List<Ray> packet = new ArrayList<>();
+        List<Double> distances = new ArrayList<>();
+        for (double[] ray : rays) {
+            Supplier<String> label = () -> bundleLabel + " ray " + Arrays.toString(ray);
+            for (double minK : new double[] { MIN_K, 0 }) {
+                double expected = scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], minK,
+                        scanQuery);
+                assertEquals(expected, bvh.gatheredTransmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5],
+                        ray[6], minK, query), 0, label);
+            }
+            ++counts.rays;
+            if (scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], 0, scanQuery) < 1)
+                ++counts.darkened;
+            packet.add(new Ray(new Point3D(ray[0], ray[1], ray[2]), new Vector(ray[3], ray[4], ray[5])));
+            distances.add(ray[6]);
+        }
+        assertPacket(bvh, query, scan, scanQuery, packet, distances, 0, () -> bundleLabel);
+        if (gathered[1] == 0 || query.isSubtreeGathered())
+            return;
+        // the mesh's triangles the gather kept (box and own test), and the rays that skip them
+        boolean skipping = false;
+        double[] box = new double[6];
+        double[] data = new double[TriangleMesh.TRIANGLE_DATA];
+        for (int k = 0; k < mesh.getTrianglesCount(); ++k) {
+            mesh.bounds(k, box, 0);
+            if (!frustum.meetsBox(box, 0) || !mesh.mayMeet(k, frustum))
+                continue;
+            mesh.triangleData(k, data, 0);
+            int behind = frustum.startsBehind(data, 0);
+            for (double[] ray : rays)
+                if ((frustum.startOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]) & behind) != 0) {
+                    ++counts.skipped;
+                    skipping = true;
+                    int triangle = k;
+                    assertEquals(Geometry.NO_HIT, Triangle.intersect(data, 0, ray[0], ray[1], ray[2], ray[3], ray[4],
+                            ray[5], ray[6]), 0, () -> bundleLabel + ": triangle " + triangle + " skipped by the ray "
+                            + Arrays.toString(ray) + " is hit by it");
+                }
+        }
+        if (skipping && gathered[0] == 0)
+            ++counts.straddlingSkipping;
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gather} and
+     * {@link BoundingVolumeHierarchy#gatheredTransmittance} on bundles that leave a mesh's surface, set
+     * as the renderer sets them ({@link ShadowFrustum#setBackFace}, {@link ShadowFrustum#setStarts}):
+     * every ray's answer equals the brute-force scan's, though gathered triangles behind a ray's start
+     * are skipped, and a bundle leaving a convex mesh gathers nothing.
+     */
+    @Test
+    void testGatheredTransmittanceLeavingSurface() {
+        Random rnd = new Random(20261202);
+        double[] halves = { 0.5 };
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a tessellated sphere (radius 6, 960 triangles, one TriangleMesh) with 4 small spheres
+        // around, and a bumpy height field (1152 triangles) with a sphere over it; opaque, and with kT
+        // 0.5 everywhere (its products are exact in any order): 200 bundles each from random points of
+        // the meshes, half of them straddling the tangent plane, 30 rays each: gatheredTransmittance
+        // (and the packet's answer) = the scan's transmittance, exactly
+        StartCounts counts = new StartCounts();
+        for (int scene = 0; scene < 4; ++scene) {
+            TriangleMesh mesh = scene % 2 == 0 ? benchmark.SphereMesh.mesh(Point3D.ZERO, 6, 16, 32) : bumpyMesh();
+            Geometries geometries = new Geometries(mesh);
+            if (scene % 2 == 0)
+                for (int i = 0; i < 4; ++i)
+                    geometries.add(new Sphere(Point3D.ZERO.add(randomUnit(rnd).scale(8 + rnd.nextDouble())),
+                            0.5 + rnd.nextDouble()));
+            else
+                geometries.add(new Sphere(new Point3D(1, -1, 3), 1.5));
+            if (scene >= 2)
+                setKt(geometries, halves, rnd);
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(geometries);
+            BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(geometries);
+            for (int bundle = 0; bundle < 200; ++bundle)
+                checkLeaving(rnd, mesh, bvh, scan, bundle, counts, "TC01: scene " + scene);
+        }
+        // both kinds of bundles are common, some rays are darkened and some open, and gathered triangles
+        // of straddling bundles are skipped often: the comparison is not vacuous
+        assertTrue(counts.straddling >= 300 && counts.oneSide >= 300, "TC01: too few straddling ("
+                + counts.straddling + ") or one-sided (" + counts.oneSide + ") bundles");
+        assertTrue(counts.darkened >= 3000 && counts.rays - counts.darkened >= 3000, "TC01: too few darkened ("
+                + counts.darkened + ") or open (" + (counts.rays - counts.darkened) + ") rays of " + counts.rays);
+        assertTrue(counts.straddlingSkipping >= 200 && counts.skipped >= 20000, "TC01: too few straddling bundles "
+                + "skipping triangles (" + counts.straddlingSkipping + "), or skips (" + counts.skipped + ")");
+
+        // TC02: the tessellated sphere alone, low lights over random points of it (the square on the normal's
+        // side): the back face sets the whole convex mesh aside (gather false, every ray open as the scan
+        // says), where without it the same pyramid keeps, in about a fifth of the bundles, triangles behind
+        // its apex whose planes it meets and that lie outside none of its five faces
+        TriangleMesh sphere = benchmark.SphereMesh.mesh(Point3D.ZERO, 6, 16, 32);
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(new Geometries(sphere));
+        BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(new Geometries(sphere));
+        Query query = bvh.newQuery();
+        Query scanQuery = scan.newQuery();
+        int withoutBackFace = 0;
+        for (int bundle = 0; bundle < 100; ++bundle) {
+            int t = rnd.nextInt(sphere.getTrianglesCount());
+            Point3D p = pointOnTriangle(sphere, t, 0.1 + 0.4 * rnd.nextDouble(), 0.1 + 0.4 * rnd.nextDouble());
+            Vector normal = sphere.getNormal(t);
+            Vector n = normal.scale(Ray.DELTA / normal.length());
+            // a low light: 2 to 22 away, 0.05 to 0.3 of that over the tangent plane
+            double distance = 2 + 20 * rnd.nextDouble();
+            double height = 0.05 + 0.25 * rnd.nextDouble();
+            Point3D c = p.add(perpendicular(rnd, normal).scale(distance)).add(normal.scale(height * distance));
+            Vector a = perpendicular(rnd, c.subtract(p)).scale(distance * height * (0.05 + 0.4 * rnd.nextDouble()));
+            Vector b = a.crossProduct(c.subtract(p)).normalize().scale(a.length());
+            int[] gathered = gatherLeaving(bvh, query, p, n, c, a, b);
+            assertNotNull(gathered, "TC02: the pyramid must not be flat");
+            int number = bundle;
+            assertEquals(1, gathered[0], () -> "TC02: bundle " + number + " must leave on the normal's side");
+            assertEquals(0, gathered[1], () -> "TC02: bundle " + number + " from " + p + " must gather nothing");
+            for (double[] ray : shadowRays(rnd, p, n, c, a, b, 20)) {
+                assertEquals(1, scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], MIN_K,
+                        scanQuery), 0, "TC02: a ray leaving a convex mesh is open");
+                assertEquals(1, bvh.gatheredTransmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6],
+                        MIN_K, query), 0, "TC02: a ray leaving a convex mesh is open (gathered)");
+            }
+            // the same pyramid without the back face
+            Point3D apex = p.add(n);
+            Point3D base = c.add(n);
+            assertTrue(query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), base.getX(), base.getY(),
+                    base.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), 0), "TC02: set again");
+            if (bvh.gather(query))
+                ++withoutBackFace;
+        }
+        assertTrue(withoutBackFace >= 10, "TC02: without the back face too few bundles gathered the surface ("
+                + withoutBackFace + " of 100)");
     }
 
     /**

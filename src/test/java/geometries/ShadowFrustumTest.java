@@ -1,5 +1,6 @@
 package geometries;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -283,6 +284,240 @@ class ShadowFrustumTest {
         // TC17: after a refused set every triangle is met: true
         assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC17: the flat pyramid must be refused");
         assertTrue(meetsTriangle(frustum, 0.5, -1, -1, 1, 1, -1, 0.8, 0, -3), "TC17: a refused frustum must set no triangle aside");
+    }
+
+    /**
+     * The slanted pyramid of the back-face tests: apex (0, 0, 0), base (5, −3, 0) ± (0.5, 0.5, −1) ±
+     * (0.1, 0.1, 0.1), a light low over the plane x + y + z = 0 (its base 1.7·√3 to 2.3·√3 ahead of it
+     * along (1, 1, 1)). Its bounding box x 0..5.6, y −3.6..0, z −1.1..1.1 reaches behind that plane near
+     * the apex, so a box there is not set aside by the bounding box either. Size 5.6 + 11.4 = 17, margin
+     * 1.7e-6.
+     *
+     * @param frustum the frustum to set
+     * @return the frustum
+     */
+    private static ShadowFrustum slanted(ShadowFrustum frustum) {
+        assertTrue(frustum.set(0, 0, 0, 5, -3, 0, 0.5, 0.5, -1, 0.1, 0.1, 0.1, 0), "the slanted pyramid must be set");
+        return frustum;
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#setBackFace}: the plane through the apex across a direction
+     * the whole base lies ahead along sets aside what lies behind it, also around the apex where no
+     * other face does; it is refused, changing nothing, when the base does not lie ahead or the pyramid
+     * or direction is not proper, and the next {@link ShadowFrustum#set} takes it away.
+     */
+    @Test
+    void testSetBackFace() {
+        ShadowFrustum frustum = slanted(new ShadowFrustum());
+        double root3 = Math.sqrt(3);
+        // behind the plane x + y + z = 0 by 0.1/√3 (its corner (0.1, 0.6, −0.8) the nearest), around the
+        // apex in x and y, inside the pyramid's bounding box and outside none of its five faces
+        double[] behind = { -0.5, -0.9, -0.8, 0.1, 0.6, -0.8 };
+        // the same box 0.2 higher: its corner (0.1, 0.6, −0.6) is 0.1/√3 ahead of the plane
+        double[] straddling = { -0.5, -0.9, -0.8, 0.1, 0.6, -0.6 };
+        // a box about the base's centre, inside the pyramid
+        double[] ahead = { 4.9, -3.1, -0.1, 5.1, -2.9, 0.1 };
+        // a triangle in the plane x + y + z = −0.03 (0.03/√3 behind), around the apex's foot
+        double[] triangle = { 1, 0, -1.03, -1, 1, -0.03, 0, -1, 0.97 };
+        // the same triangle lifted 0.06 along z: it crosses the plane x + y + z = 0
+        double[] crossing = { 1, 0, -0.97, -1, 1, 0.03, 0, -1, 1.03 };
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: before a back face the box and the triangle behind the apex are met (no face sets them aside)
+        assertTrue(meets(frustum, behind), "TC01: without a back face the box behind the apex must be met");
+        assertTrue(meetsTriangle(frustum, triangle), "TC01: without a back face the triangle behind must be met");
+        // TC02: the direction (1, 1, 1), the base ahead along it: true, and the box and triangle behind
+        // are set aside
+        assertTrue(frustum.setBackFace(1, 1, 1), "TC02: a back face with the base ahead must be set");
+        assertFalse(meets(frustum, behind), "TC02: the box behind the back face must be set aside");
+        assertFalse(meetsTriangle(frustum, triangle), "TC02: the triangle behind the back face must be set aside");
+        // TC03: a box straddling the back plane, a box ahead and a triangle crossing the plane are still met
+        assertTrue(meets(frustum, straddling), "TC03: a box across the back face must be met");
+        assertTrue(meets(frustum, ahead), "TC03: a box inside the pyramid must be met");
+        assertTrue(meetsTriangle(frustum, crossing), "TC03: a triangle across the back face must be met");
+        // TC04: the same direction not normalised, (0.5, 0.5, 0.5): the same back face
+        assertTrue(slanted(frustum).setBackFace(0.5, 0.5, 0.5), "TC04: the length of the direction must not matter");
+        assertFalse(meets(frustum, behind), "TC04: the box behind the back face must be set aside");
+        // TC05: the next set takes the back face away: the box behind met again
+        slanted(frustum);
+        assertTrue(meets(frustum, behind), "TC05: a new set must take the back face away");
+        assertTrue(meetsTriangle(frustum, triangle), "TC05: a new set must take the back face away (triangle)");
+        // TC06: a direction some base corner lies behind, (−1, −1, −1): false, and nothing is set aside more
+        assertFalse(frustum.setBackFace(-1, -1, -1), "TC06: a back face with the base behind must be refused");
+        assertTrue(meets(frustum, behind), "TC06: a refused back face must set nothing aside");
+        assertTrue(meets(frustum, ahead), "TC06: a refused back face must set nothing aside");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the back face set, a box touching the back plane (corner sum 0): met; 1e-6 behind it
+        // (within the margin 1.7e-6): met; 1e-4 behind it: set aside
+        assertTrue(frustum.setBackFace(1, 1, 1), "TC11: the back face must be set");
+        assertTrue(meets(frustum, -0.5, -0.9, -0.8, 0.1, 0.6, -0.7), "TC11: a box touching the back face must be met");
+        assertTrue(meets(frustum, -0.5, -0.9, -0.8, 0.1, 0.6, -0.7 - 1e-6 * root3),
+                "TC11: a box within the margin of the back face must be met");
+        assertFalse(meets(frustum, -0.5, -0.9, -0.8, 0.1, 0.6, -0.7 - 1e-4 * root3),
+                "TC11: a box beyond the margin of the back face must be set aside");
+        // TC12: the triangle moved into the back plane x + y + z = 0 itself: met
+        assertTrue(meetsTriangle(frustum, 1, 0, -1, -1, 1, 0, 0, -1, 1), "TC12: a triangle in the back plane must be met");
+        // The standard pyramid (apex 0, base (±2, ±2, 10), margin 2.8e-6) and directions (1, 0, s): the
+        // corners (−2, ±2, 10) lie (10s − 2)/√(1 + s²) ahead
+        ShadowFrustum standard = standard();
+        // TC13: s = 0.2, the corners in the plane: false; s = 0.1, behind it: false
+        assertFalse(standard.setBackFace(1, 0, 0.2), "TC13: base corners in the back plane must refuse it");
+        assertFalse(standard.setBackFace(1, 0, 0.1), "TC13: base corners behind the back plane must refuse it");
+        // TC14: s = 0.2 + 1e-7, ahead by 0.98e-6 (within the margin): false; s = 0.2 + 1e-6, ahead by
+        // 9.8e-6: true
+        assertFalse(standard.setBackFace(1, 0, 0.2 + 1e-7), "TC14: corners ahead within the margin must refuse it");
+        assertTrue(standard.setBackFace(1, 0, 0.2 + 1e-6), "TC14: corners ahead beyond the margin must allow it");
+        // TC15: a zero, NaN or infinite direction: false, and the box behind the slanted apex still met
+        slanted(frustum);
+        double inf = Double.POSITIVE_INFINITY;
+        double[][] bad = { { 0, 0, 0 }, { Double.NaN, 1, 1 }, { 1, 1, Double.NaN }, { inf, 1, 1 }, { 1, -inf, 1 } };
+        for (double[] d : bad) {
+            assertFalse(frustum.setBackFace(d[0], d[1], d[2]), "TC15: the direction " + Arrays.toString(d)
+                    + " must be refused");
+            assertTrue(meets(frustum, behind), "TC15: a refused back face must set nothing aside");
+        }
+        // TC16: before any set, and after a refused (flat) set: false, every box met
+        ShadowFrustum fresh = new ShadowFrustum();
+        assertFalse(fresh.setBackFace(0, 0, 1), "TC16: an unset frustum must refuse a back face");
+        assertTrue(meets(fresh, -1, -1, -2, 1, 1, -1), "TC16: an unset frustum must set no box aside");
+        assertFalse(standard.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC16: the flat pyramid must be refused");
+        assertFalse(standard.setBackFace(0, 0, 1), "TC16: a refused frustum must refuse a back face");
+        assertTrue(meets(standard, -1, -1, -2, 1, 1, -1), "TC16: a refused frustum must set no box aside");
+        assertTrue(meetsTriangle(standard, -5, -5, -1, 5, -5, -1, 0, 5, -1),
+                "TC16: a refused frustum must set no triangle aside");
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#setStarts} and {@link ShadowFrustum#startOf}: a ray from
+     * exactly p + n to n's side starts {@link ShadowFrustum#ABOVE}, one from exactly p − n to the other
+     * side {@link ShadowFrustum#BELOW}, any other 0.
+     */
+    @Test
+    void testStartOf() {
+        ShadowFrustum frustum = standard(0.1);
+        // p = (1, 2, 3), n = (0, 0.1, 0.1): the starts p + n and p − n as the renderer computes them
+        double px = 1;
+        double py = 2;
+        double pz = 3;
+        double ny = 0.1;
+        double nz = 0.1;
+        frustum.setStarts(px, py, pz, 0, ny, nz);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: from p + n along n, and slanted to n's side: ABOVE
+        assertEquals(ShadowFrustum.ABOVE, frustum.startOf(px, py + ny, pz + nz, 0, 1, 1), "TC01: along n from p + n");
+        assertEquals(ShadowFrustum.ABOVE, frustum.startOf(px, py + ny, pz + nz, 0.8, 0.6, -0.2),
+                "TC01: slanted to n's side from p + n");
+        // TC02: from p − n against n, and slanted to the other side: BELOW
+        assertEquals(ShadowFrustum.BELOW, frustum.startOf(px, py - ny, pz - nz, 0, -1, -1), "TC02: against n from p − n");
+        assertEquals(ShadowFrustum.BELOW, frustum.startOf(px, py - ny, pz - nz, -0.8, 0.2, -0.6),
+                "TC02: slanted to the other side from p − n");
+        // TC03: from p + n to the other side, from p − n to n's side: 0
+        assertEquals(0, frustum.startOf(px, py + ny, pz + nz, 0, -1, 0), "TC03: from p + n against n");
+        assertEquals(0, frustum.startOf(px, py - ny, pz - nz, 0, 0, 1), "TC03: from p − n along n");
+        // TC04: from p itself, and from a point elsewhere: 0
+        assertEquals(0, frustum.startOf(px, py, pz, 0, 1, 1), "TC04: from p itself");
+        assertEquals(0, frustum.startOf(5, 5, 5, 0, 1, 1), "TC04: from elsewhere");
+
+        // ===== Boundary Values Tests =====
+        // TC11: from p + n with one coordinate one ulp off: 0 (each coordinate in turn), and the same for p − n
+        assertEquals(0, frustum.startOf(Math.nextUp(px), py + ny, pz + nz, 0, 1, 1), "TC11: x one ulp off p + n");
+        assertEquals(0, frustum.startOf(px, Math.nextUp(py + ny), pz + nz, 0, 1, 1), "TC11: y one ulp off p + n");
+        assertEquals(0, frustum.startOf(px, py + ny, Math.nextDown(pz + nz), 0, 1, 1), "TC11: z one ulp off p + n");
+        assertEquals(0, frustum.startOf(px, py - ny, Math.nextUp(pz - nz), 0, -1, -1), "TC11: z one ulp off p − n");
+        // TC12: a direction along the surface (d·n = 0), from either start: 0
+        assertEquals(0, frustum.startOf(px, py + ny, pz + nz, 0, 1, -1), "TC12: along the surface from p + n");
+        assertEquals(0, frustum.startOf(px, py - ny, pz - nz, 1, 0, 0), "TC12: along the surface from p − n");
+        // TC13: a new set forgets the starts: 0
+        frustum = standard(0.1);
+        assertEquals(0, frustum.startOf(px, py + ny, pz + nz, 0, 1, 1), "TC13: after a new set no start is known");
+        // TC14: starts never set: 0; set with n = 0: 0 (p + n = p − n = p from either side)
+        assertEquals(0, new ShadowFrustum().startOf(px, py + ny, pz + nz, 0, 1, 1), "TC14: no starts set");
+        frustum.setStarts(px, py, pz, 0, 0, 0);
+        assertEquals(0, frustum.startOf(px, py, pz, 0, 1, 1), "TC14: a zero offset sets no starts");
+    }
+
+    /**
+     * The starts a triangle lies behind, given by its vertices, placed after three dummy numbers.
+     *
+     * @param frustum the frustum
+     * @param v       the vertices p1, p2, p3
+     * @return {@link ShadowFrustum#startsBehind} of p1, p2 − p1, p3 − p1
+     */
+    private static int startsBehind(ShadowFrustum frustum, double... v) {
+        double[] data = new double[12];
+        for (int k = 0; k < 3; ++k) {
+            data[3 + k] = v[k];
+            data[6 + k] = v[3 + k] - v[k];
+            data[9 + k] = v[6 + k] - v[k];
+        }
+        return frustum.startsBehind(data, 3);
+    }
+
+    /**
+     * A triangle of the plane z = h, around the z axis (from (−1, −1) to (1, 1)).
+     *
+     * @param h the height
+     * @return the vertices
+     */
+    private static double[] flat(double h) {
+        return new double[] { -1, -1, h, 1, -1, h, 0, 1, h };
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#startsBehind}: which of the starts p ± n a triangle (grown by
+     * the renderer's tolerance) lies behind by more than the rounding margin.
+     * <p>
+     * The standard pyramid 0.1 thick (margin 2.8e-6, plus the thickness for boxes and faces; the
+     * starts need only the margin), p = (0, 0, 0), n = (0, 0, 0.1): the starts are (0, 0, ±0.1).
+     */
+    @Test
+    void testStartsBehind() {
+        ShadowFrustum frustum = standard(0.1);
+        frustum.setStarts(0, 0, 0, 0, 0, 0.1);
+        int both = ShadowFrustum.ABOVE | ShadowFrustum.BELOW;
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a triangle of the surface (z = 0), between the starts: behind both
+        assertEquals(both, startsBehind(frustum, flat(0)), "TC01: the surface's triangle lies behind both starts");
+        // TC02: a slanted triangle within the slab (z from −0.05 to 0.05): behind both
+        assertEquals(both, startsBehind(frustum, -1, -1, -0.05, 1, -1, -0.05, 0, 1, 0.05),
+                "TC02: a triangle between the starts lies behind both");
+        // TC03: a triangle below p − n (z = −0.5): behind p + n only
+        assertEquals(ShadowFrustum.ABOVE, startsBehind(frustum, flat(-0.5)), "TC03: below both starts: ABOVE");
+        // TC04: a triangle above p + n (z = 0.5): behind p − n only
+        assertEquals(ShadowFrustum.BELOW, startsBehind(frustum, flat(0.5)), "TC04: above both starts: BELOW");
+        // TC05: a triangle crossing the surface from z = −1 to 1: behind neither
+        assertEquals(0, startsBehind(frustum, -1, -1, -1, 1, -1, -1, 0, 1, 1), "TC05: a crossing triangle: 0");
+        // TC06: a triangle crossing only the plane of p + n (z from 0 to 0.2): behind p − n only
+        assertEquals(ShadowFrustum.BELOW, startsBehind(frustum, -1, -1, 0, 1, -1, 0, 0, 1, 0.2),
+                "TC06: crossing the plane of p + n: BELOW");
+        // TC07: a slanted n, (0.06, 0, 0.08), and the plane 0.6x + 0.8z = 0 through p: behind both
+        ShadowFrustum slant = standard(0.1);
+        slant.setStarts(0, 0, 0, 0.06, 0, 0.08);
+        assertEquals(both, startsBehind(slant, -0.8, -1, 0.6, 0.8, -1, -0.6, 0, 1, 0), "TC07: a slanted surface");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a triangle in the plane of p + n (z = 0.1): not behind it, behind p − n
+        assertEquals(ShadowFrustum.BELOW, startsBehind(frustum, flat(0.1)), "TC11: in the plane of p + n");
+        // TC12: in the plane of p − n (z = −0.1): behind p + n only
+        assertEquals(ShadowFrustum.ABOVE, startsBehind(frustum, flat(-0.1)), "TC12: in the plane of p − n");
+        // TC13: 1e-6 behind p + n (within the margin 2.8e-6): not behind it; 1e-5 behind it: behind both
+        assertEquals(ShadowFrustum.BELOW, startsBehind(frustum, flat(0.1 - 1e-6)), "TC13: within the margin");
+        assertEquals(both, startsBehind(frustum, flat(0.1 - 1e-5)), "TC13: beyond the margin");
+        // TC14: the same below p − n
+        assertEquals(ShadowFrustum.ABOVE, startsBehind(frustum, flat(-0.1 + 1e-6)), "TC14: within the margin");
+        assertEquals(both, startsBehind(frustum, flat(-0.1 + 1e-5)), "TC14: beyond the margin");
+        // TC15: a vertex 1e-4 behind p + n whose edges reach 1e5 down: the renderer's test grows it by
+        // 1e-9 of its two edges, 2e-4 along n, past the start: behind neither (without the growth: ABOVE)
+        assertEquals(0, startsBehind(frustum, 0, 0, 0.1 - 1e-4, 1, 0, -1e5, 0, 1, -1e5),
+                "TC15: a vertex grown past the start");
+        // TC16: no starts set (a fresh set forgets them): 0 for every triangle
+        frustum = standard(0.1);
+        assertEquals(0, startsBehind(frustum, flat(0)), "TC16: no starts after a new set");
+        assertEquals(0, startsBehind(new ShadowFrustum(), flat(-0.5)), "TC16: no starts ever set");
     }
 
     /** Test method for {@link ShadowFrustum#meetsPlane}. */
