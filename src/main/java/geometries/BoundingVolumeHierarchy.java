@@ -56,6 +56,8 @@ public final class BoundingVolumeHierarchy {
     static final double MISSED = -1;
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
+    /** The places of all gathered bodies, in order. */
+    private static final int[] ALL_GATHERED = IntStream.range(0, MAX_GATHERED).toArray();
     /**
      * The numbers a gathered mesh triangle keeps for the bundle's rays: the ten of its test (see
      * {@link TriangleMesh#triangleData}) and its mesh's {@code kT}.
@@ -132,9 +134,10 @@ public final class BoundingVolumeHierarchy {
         /** How many bodies {@link #gather} found, or −1 when they were too many (a subtree was kept). */
         private int gatheredCount;
         /**
-         * Per start of a ray, as the frustum's {@link ShadowFrustum#startOf} tells them (0 for a ray from
-         * neither or when no starts are set), the places in {@link #gathered} of the bodies such a ray
-         * tests, in order (not the triangles behind that start), and how many.
+         * When the frustum's starts are set: per start of a ray, {@link ShadowFrustum#ABOVE} or
+         * {@link ShadowFrustum#BELOW} as its {@link ShadowFrustum#startOf} tells, the places in
+         * {@link #gathered} of the bodies a ray from there tests, in order (not the triangles behind
+         * that start), and how many.
          */
         private final int[][] startLists = new int[3][MAX_GATHERED];
         private final int[] startCounts = new int[3];
@@ -508,7 +511,8 @@ public final class BoundingVolumeHierarchy {
                 query.gatheredUnbounded[found++] = body;
         query.unboundedCount = found;
         query.gatheredCount = 0;
-        Arrays.fill(query.startCounts, 0);
+        query.startCounts[ShadowFrustum.ABOVE] = 0;
+        query.startCounts[ShadowFrustum.BELOW] = 0;
         if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0))
             gatherTree(query);
         return found > 0 || query.gatheredCount != 0 || others.length > 0;
@@ -571,8 +575,9 @@ public final class BoundingVolumeHierarchy {
                 }
                 query.gathered[slot] = part >= 0 ? -1 : b;
                 query.gatheredCount = slot + 1;
-                listByStarts(query, slot, part >= 0 ? query.frustum.startsBehind(query.gatheredTriangles,
-                        GATHERED_TRIANGLE * slot) : 0);
+                if (query.frustum.hasStarts())
+                    listByStarts(query, slot, part >= 0 ? query.frustum.startsBehind(query.gatheredTriangles,
+                            GATHERED_TRIANGLE * slot) : 0);
             }
         return true;
     }
@@ -584,7 +589,7 @@ public final class BoundingVolumeHierarchy {
      * @param behind the starts it lies behind, as {@link ShadowFrustum#startsBehind} tells
      */
     private static void listByStarts(Query query, int slot, int behind) {
-        for (int start = 0; start < query.startLists.length; ++start)
+        for (int start = ShadowFrustum.ABOVE; start <= ShadowFrustum.BELOW; ++start)
             if ((behind & start) == 0)
                 query.startLists[start][query.startCounts[start]++] = slot;
     }
@@ -654,8 +659,10 @@ public final class BoundingVolumeHierarchy {
             if (!walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK))
                 return 0;
         } else {
-            int[] list = query.startLists[start];
-            for (int k = 0; k < query.startCounts[start]; ++k)
+            // with no starts set, every gathered body in order
+            int[] list = start == 0 ? ALL_GATHERED : query.startLists[start];
+            int count = start == 0 ? query.gatheredCount : query.startCounts[start];
+            for (int k = 0; k < count; ++k)
                 if (!visitGathered(query, list[k], ox, oy, oz, dx, dy, dz, minK))
                     return 0;
         }

@@ -26,12 +26,12 @@ public final class ShadowFrustum {
     private static final int PLANES = 5;
 
     /**
-     * The four sides and the base, and a back face when one is set ({@link #setBackFace}), as (unit
-     * outward normal, offset): outside where n·x − offset > margin.
+     * The four sides and the base, then the back face ({@link #setBackFace}), as (unit outward normal,
+     * offset): outside where n·x − offset > margin.
      */
     private final double[] planes = new double[4 * (PLANES + 1)];
-    /** The number of planes in {@link #planes} that set things aside: the pyramid's faces, and the back face if set. */
-    private int planesCount;
+    /** Whether the back face is set since the last {@link #set}. */
+    private boolean backFaceSet;
     /** The apex and the four corners of the base, three coordinates each. */
     private final double[] vertices = new double[15];
     /** The box around the vertices, {minX, minY, minZ, maxX, maxY, maxZ}. */
@@ -99,7 +99,7 @@ public final class ShadowFrustum {
         double ny = az * bx - ax * bz;
         double nz = ax * by - ay * bx;
         valid = setPlane(4, nx, ny, nz, nx * cx + ny * cy + nz * cz, ox, oy, oz);
-        planesCount = PLANES;
+        backFaceSet = false;
         return valid;
     }
 
@@ -108,8 +108,10 @@ public final class ShadowFrustum {
      * direction, when the whole base lies ahead of it along that direction by more than the margin.
      * The pyramid lies ahead of that plane, so what lies behind it by more than the thickness and
      * margin meets no ray: the surface a bundle of shadow rays leaves, seen from an apex a little off
-     * it, with the normal as the direction. Plane-by-plane tests miss such a body when it lies
-     * around the apex, outside the pyramid but not outside any one of its other faces. The next
+     * it, with the normal as the direction. Plane-by-plane tests miss such a triangle when it lies
+     * around the apex, outside the pyramid but not outside any one of its other faces. The back face
+     * sets triangles aside ({@link #meetsTriangle}), not boxes: a box of the surface's triangles
+     * around the apex mostly reaches over the plane, and every box would pay a sixth test. The next
      * {@link #set} takes the back face away.
      *
      * @param nx the direction, x
@@ -122,9 +124,10 @@ public final class ShadowFrustum {
         double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
         if (!valid || !(length > 0) || length == Double.POSITIVE_INFINITY)
             return false;
-        double ux = nx / length;
-        double uy = ny / length;
-        double uz = nz / length;
+        double inverse = 1 / length;
+        double ux = nx * inverse;
+        double uy = ny * inverse;
+        double uz = nz * inverse;
         double[] v = vertices;
         for (int i = 3; i < 15; i += 3)
             if (!(ux * (v[i] - v[0]) + uy * (v[i + 1] - v[1]) + uz * (v[i + 2] - v[2]) > margin))
@@ -134,7 +137,7 @@ public final class ShadowFrustum {
         planes[p + 1] = -uy;
         planes[p + 2] = -uz;
         planes[p + 3] = -(ux * v[0] + uy * v[1] + uz * v[2]);
-        planesCount = PLANES + 1;
+        backFaceSet = true;
         return true;
     }
 
@@ -344,30 +347,27 @@ public final class ShadowFrustum {
         double[] h = hull;
         if (x0 > h[3] + m || y0 > h[4] + m || z0 > h[5] + m || x1 < h[0] - m || y1 < h[1] - m || z1 < h[2] - m)
             return false;
-        for (int p = 0; p < 4 * PLANES; p += 4)
-            if (!boxInside(x0, y0, z0, x1, y1, z1, p))
-                return false;
-        return planesCount == PLANES || boxInside(x0, y0, z0, x1, y1, z1, 4 * PLANES);
-    }
-
-    /**
-     * Whether a box is inside a plane of {@link #planes}, or outside it by no more than the margin:
-     * whether its corner farthest inside is.
-     */
-    private boolean boxInside(double x0, double y0, double z0, double x1, double y1, double z1, int p) {
         double[] pl = planes;
-        double nx = pl[p];
-        double ny = pl[p + 1];
-        double nz = pl[p + 2];
-        return nx * (nx > 0 ? x0 : x1) + ny * (ny > 0 ? y0 : y1) + nz * (nz > 0 ? z0 : z1) - pl[p + 3] <= margin;
+        for (int p = 0; p < 4 * PLANES; p += 4) {
+            double nx = pl[p];
+            double ny = pl[p + 1];
+            double nz = pl[p + 2];
+            // the box's corner farthest inside the plane
+            double x = nx > 0 ? x0 : x1;
+            double y = ny > 0 ? y0 : y1;
+            double z = nz > 0 ? z0 : z1;
+            if (nx * x + ny * y + nz * z - pl[p + 3] > m)
+                return false;
+        }
+        return true;
     }
 
     /**
      * Whether a triangle, as the renderer's closed test takes it (grown by {@link Triangle}'s
      * barycentric tolerance: each vertex p moved by τ·((p − q) + (p − r)), q and r the other two),
      * may meet the pyramid. It is set aside when its three grown vertices lie outside one face of the
-     * pyramid (a side or the base) by more than the thickness and margin: the triangle, their convex
-     * hull, then lies outside it too.
+     * pyramid (a side, the base, or the back face when set) by more than the thickness and margin: the
+     * triangle, their convex hull, then lies outside it too.
      *
      * @param vertices the coordinates of the vertices, three doubles each
      * @param p1       where the first vertex's x lies in vertices
@@ -381,7 +381,7 @@ public final class ShadowFrustum {
             return true;
         double[] pl = planes;
         int back = 4 * PLANES;
-        if (planesCount > PLANES && outside(pl[back], pl[back + 1], pl[back + 2], pl[back + 3], vertices, p1, p2, p3))
+        if (backFaceSet && outside(pl[back], pl[back + 1], pl[back + 2], pl[back + 3], vertices, p1, p2, p3))
             return false; // first: it sets aside the many triangles around the apex
         for (int p = 0; p < 4 * PLANES; p += 4)
             if (outside(pl[p], pl[p + 1], pl[p + 2], pl[p + 3], vertices, p1, p2, p3))

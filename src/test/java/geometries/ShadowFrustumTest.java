@@ -303,9 +303,10 @@ class ShadowFrustumTest {
 
     /**
      * Test method for {@link ShadowFrustum#setBackFace}: the plane through the apex across a direction
-     * the whole base lies ahead along sets aside what lies behind it, also around the apex where no
-     * other face does; it is refused, changing nothing, when the base does not lie ahead or the pyramid
-     * or direction is not proper, and the next {@link ShadowFrustum#set} takes it away.
+     * the whole base lies ahead along sets aside the triangles behind it, also around the apex where no
+     * other face does (boxes it leaves to the other faces); it is refused, changing nothing, when the
+     * base does not lie ahead or the pyramid or direction is not proper, and the next
+     * {@link ShadowFrustum#set} takes it away.
      */
     @Test
     void testSetBackFace() {
@@ -314,8 +315,6 @@ class ShadowFrustumTest {
         // behind the plane x + y + z = 0 by 0.1/√3 (its corner (0.1, 0.6, −0.8) the nearest), around the
         // apex in x and y, inside the pyramid's bounding box and outside none of its five faces
         double[] behind = { -0.5, -0.9, -0.8, 0.1, 0.6, -0.8 };
-        // the same box 0.2 higher: its corner (0.1, 0.6, −0.6) is 0.1/√3 ahead of the plane
-        double[] straddling = { -0.5, -0.9, -0.8, 0.1, 0.6, -0.6 };
         // a box about the base's centre, inside the pyramid
         double[] ahead = { 4.9, -3.1, -0.1, 5.1, -2.9, 0.1 };
         // a triangle in the plane x + y + z = −0.03 (0.03/√3 behind), around the apex's foot
@@ -327,36 +326,35 @@ class ShadowFrustumTest {
         // TC01: before a back face the box and the triangle behind the apex are met (no face sets them aside)
         assertTrue(meets(frustum, behind), "TC01: without a back face the box behind the apex must be met");
         assertTrue(meetsTriangle(frustum, triangle), "TC01: without a back face the triangle behind must be met");
-        // TC02: the direction (1, 1, 1), the base ahead along it: true, and the box and triangle behind
-        // are set aside
+        // TC02: the direction (1, 1, 1), the base ahead along it: true, and the triangle behind is set
+        // aside; the box behind still meets (the back face tests triangles only)
         assertTrue(frustum.setBackFace(1, 1, 1), "TC02: a back face with the base ahead must be set");
-        assertFalse(meets(frustum, behind), "TC02: the box behind the back face must be set aside");
         assertFalse(meetsTriangle(frustum, triangle), "TC02: the triangle behind the back face must be set aside");
-        // TC03: a box straddling the back plane, a box ahead and a triangle crossing the plane are still met
-        assertTrue(meets(frustum, straddling), "TC03: a box across the back face must be met");
+        assertTrue(meets(frustum, behind), "TC02: the back face must not set a box aside");
+        // TC03: a box ahead and a triangle crossing the plane are still met
         assertTrue(meets(frustum, ahead), "TC03: a box inside the pyramid must be met");
         assertTrue(meetsTriangle(frustum, crossing), "TC03: a triangle across the back face must be met");
         // TC04: the same direction not normalised, (0.5, 0.5, 0.5): the same back face
         assertTrue(slanted(frustum).setBackFace(0.5, 0.5, 0.5), "TC04: the length of the direction must not matter");
-        assertFalse(meets(frustum, behind), "TC04: the box behind the back face must be set aside");
+        assertFalse(meetsTriangle(frustum, triangle), "TC04: the triangle behind the back face must be set aside");
         // TC05: the next set takes the back face away: the box behind met again
         slanted(frustum);
         assertTrue(meets(frustum, behind), "TC05: a new set must take the back face away");
         assertTrue(meetsTriangle(frustum, triangle), "TC05: a new set must take the back face away (triangle)");
         // TC06: a direction some base corner lies behind, (−1, −1, −1): false, and nothing is set aside more
         assertFalse(frustum.setBackFace(-1, -1, -1), "TC06: a back face with the base behind must be refused");
-        assertTrue(meets(frustum, behind), "TC06: a refused back face must set nothing aside");
+        assertTrue(meetsTriangle(frustum, triangle), "TC06: a refused back face must set nothing aside");
         assertTrue(meets(frustum, ahead), "TC06: a refused back face must set nothing aside");
 
         // ===== Boundary Values Tests =====
-        // TC11: the back face set, a box touching the back plane (corner sum 0): met; 1e-6 behind it
+        // TC11: the back face set, a triangle in the plane x + y + z = c: 1e-6 behind the back plane
         // (within the margin 1.7e-6): met; 1e-4 behind it: set aside
         assertTrue(frustum.setBackFace(1, 1, 1), "TC11: the back face must be set");
-        assertTrue(meets(frustum, -0.5, -0.9, -0.8, 0.1, 0.6, -0.7), "TC11: a box touching the back face must be met");
-        assertTrue(meets(frustum, -0.5, -0.9, -0.8, 0.1, 0.6, -0.7 - 1e-6 * root3),
-                "TC11: a box within the margin of the back face must be met");
-        assertFalse(meets(frustum, -0.5, -0.9, -0.8, 0.1, 0.6, -0.7 - 1e-4 * root3),
-                "TC11: a box beyond the margin of the back face must be set aside");
+        for (double behindBy : new double[] { 1e-6, 1e-4 }) {
+            double c = -behindBy * root3;
+            assertEquals(behindBy < 1.7e-6, meetsTriangle(frustum, 1, 0, c - 1, -1, 1, c, 0, -1, c + 1),
+                    "TC11: a triangle " + behindBy + " behind the back face");
+        }
         // TC12: the triangle moved into the back plane x + y + z = 0 itself: met
         assertTrue(meetsTriangle(frustum, 1, 0, -1, -1, 1, 0, 0, -1, 1), "TC12: a triangle in the back plane must be met");
         // The standard pyramid (apex 0, base (±2, ±2, 10), margin 2.8e-6) and directions (1, 0, s): the
@@ -369,14 +367,14 @@ class ShadowFrustumTest {
         // 9.8e-6: true
         assertFalse(standard.setBackFace(1, 0, 0.2 + 1e-7), "TC14: corners ahead within the margin must refuse it");
         assertTrue(standard.setBackFace(1, 0, 0.2 + 1e-6), "TC14: corners ahead beyond the margin must allow it");
-        // TC15: a zero, NaN or infinite direction: false, and the box behind the slanted apex still met
+        // TC15: a zero, NaN or infinite direction: false, and the triangle behind the slanted apex still met
         slanted(frustum);
         double inf = Double.POSITIVE_INFINITY;
         double[][] bad = { { 0, 0, 0 }, { Double.NaN, 1, 1 }, { 1, 1, Double.NaN }, { inf, 1, 1 }, { 1, -inf, 1 } };
         for (double[] d : bad) {
             assertFalse(frustum.setBackFace(d[0], d[1], d[2]), "TC15: the direction " + Arrays.toString(d)
                     + " must be refused");
-            assertTrue(meets(frustum, behind), "TC15: a refused back face must set nothing aside");
+            assertTrue(meetsTriangle(frustum, triangle), "TC15: a refused back face must set nothing aside");
         }
         // TC16: before any set, and after a refused (flat) set: false, every box met
         ShadowFrustum fresh = new ShadowFrustum();
