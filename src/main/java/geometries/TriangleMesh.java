@@ -405,9 +405,11 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
-     * Whether triangle t may meet any ray of a shadow bundle: only when its plane does (as
-     * {@link Polygon}'s test) and the triangle itself is not outside a face of the pyramid
-     * ({@link ShadowFrustum#meetsTriangle}). Reads the mesh's arrays, allocates nothing.
+     * Whether triangle t may meet any ray of a shadow bundle: only when it lies behind neither of the
+     * rays' starts ({@link ShadowFrustum#behindStarts}), is not outside a face of the pyramid
+     * ({@link ShadowFrustum#meetsTriangle}, tested first: the cheaper test, and the one that sets
+     * aside the surface around the apex) and its plane meets it (as {@link Polygon}'s test). Reads the
+     * mesh's arrays, allocates nothing.
      *
      * @param t       the triangle's index
      * @param frustum the pyramid the bundle sweeps
@@ -417,7 +419,7 @@ public final class TriangleMesh extends Geometry {
         int a = corner(t, 0);
         int b = corner(t, 1);
         int c = corner(t, 2);
-        if (frustum.behindStarts(vertices, a, b, c))
+        if (frustum.behindStarts(vertices, a, b, c) || !frustum.meetsTriangle(vertices, a, b, c))
             return false;
         double ux = vertices[b] - vertices[a];
         double uy = vertices[b + 1] - vertices[a + 1];
@@ -430,7 +432,7 @@ public final class TriangleMesh extends Geometry {
         double nz = ux * vy - uy * vx;
         double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
         return frustum.meetsPlane(nx / length, ny / length, nz / length, vertices[a], vertices[a + 1],
-                vertices[a + 2]) && frustum.meetsTriangle(vertices, a, b, c);
+                vertices[a + 2]);
     }
 
     /**
