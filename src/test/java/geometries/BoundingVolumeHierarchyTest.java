@@ -2516,6 +2516,357 @@ class BoundingVolumeHierarchyTest {
                 + withoutBackFace + " of 100)");
     }
 
+    // ---------------------------------------------------------------- triangles left out behind both starts
+
+    /**
+     * The triangles of a scene, as one mesh or as course-style {@link Triangle} objects, each the same
+     * numbers.
+     *
+     * @param body      the mesh or the composite of the triangles
+     * @param mesh      the mesh, or null
+     * @param triangles the triangles' objects, or null
+     */
+    private record Surface(Intersectable body, TriangleMesh mesh, List<Triangle> triangles) {
+        /**
+         * Builds the triangles, all of one kT.
+         *
+         * @param vertices the triangles, nine coordinates each
+         * @param asMesh   true for one mesh, false for Triangle objects in a Geometries
+         * @param kT       the transparency of every triangle
+         * @return the surface
+         */
+        static Surface of(List<double[]> vertices, boolean asMesh, double kT) {
+            Material material = new Material().setKt(kT);
+            if (asMesh) {
+                double[] coordinates = new double[9 * vertices.size()];
+                int[] indices = new int[3 * vertices.size()];
+                for (int t = 0; t < vertices.size(); ++t) {
+                    System.arraycopy(vertices.get(t), 0, coordinates, 9 * t, 9);
+                    for (int i = 0; i < 3; ++i)
+                        indices[3 * t + i] = 3 * t + i;
+                }
+                TriangleMesh mesh = new TriangleMesh(coordinates, indices);
+                mesh.setMaterial(material);
+                return new Surface(mesh, mesh, null);
+            }
+            List<Triangle> triangles = new ArrayList<>();
+            for (double[] v : vertices) {
+                Triangle triangle = new Triangle(new Point3D(v[0], v[1], v[2]), new Point3D(v[3], v[4], v[5]),
+                        new Point3D(v[6], v[7], v[8]));
+                triangle.setMaterial(material);
+                triangles.add(triangle);
+            }
+            return new Surface(new Geometries(triangles.toArray(new Intersectable[0])), null, triangles);
+        }
+
+        /**
+         * Whether the gather keeps triangle t (if its box meets the frustum).
+         *
+         * @param t       the triangle's index
+         * @param frustum the frustum
+         * @return its mayMeet
+         */
+        boolean mayMeet(int t, ShadowFrustum frustum) {
+            return mesh != null ? mesh.mayMeet(t, frustum) : triangles.get(t).mayMeet(frustum);
+        }
+    }
+
+    /**
+     * The two triangles of the rectangle [x0, x1] × [y0, y1] whose height runs linearly in x from h0 to h1.
+     *
+     * @param list where to add them
+     */
+    private static void addCell(List<double[]> list, double x0, double x1, double y0, double y1, double h0,
+                                double h1) {
+        list.add(new double[] { x0, y0, h0, x1, y0, h1, x1, y1, h1 });
+        list.add(new double[] { x0, y0, h0, x1, y1, h1, x0, y1, h0 });
+    }
+
+    /**
+     * A ray as {@link #shadowRays} gives it: {ox, oy, oz, dx, dy, dz, distance}, from a point to another.
+     *
+     * @param from the start
+     * @param to   the end
+     * @return the ray
+     */
+    private static double[] rayFromTo(Point3D from, Point3D to) {
+        Vector d = to.subtract(from);
+        double distance = d.length();
+        d = d.normalize();
+        return new double[] { from.getX(), from.getY(), from.getZ(), d.getX(), d.getY(), d.getZ(), distance };
+    }
+
+    /**
+     * A bundle leaving a point p of a surface z = 0 (starts p ± {@link #UP}) to the square centred
+     * (10, p.y, 0), half-sides (0, 0, h) and (0, h, 0), straddling the surface, gathered over the surface
+     * and a sphere (8, p.y, 0), radius 0.5, kT 0.5; the hierarchy of the two and their scan.
+     *
+     * @param surface   the surface
+     * @param p         the point the rays leave
+     * @param c         the centre of the square
+     * @param a         half of one side
+     * @param b         half of the other side
+     * @param bvh       the hierarchy
+     * @param query     its scratch space, as the gather left it
+     * @param scan      the scan of the same scene
+     * @param scanQuery the scan's scratch space
+     */
+    private record Straddling(Surface surface, Point3D p, Point3D c, Vector a, Vector b, BoundingVolumeHierarchy bvh,
+                              Query query, BoundingVolumeHierarchy scan, Query scanQuery) {
+        /**
+         * Builds the scene and gathers the bundle as {@link #gatherLeaving} sets it, asserting that its
+         * square straddles the surface, that something is gathered, one by one.
+         *
+         * @param surface the surface
+         * @param p       the point the rays leave
+         * @param half    the square's half-side h
+         * @param kind    the failure messages' prefix
+         * @return the gathered bundle
+         */
+        static Straddling of(Surface surface, Point3D p, double half, String kind) {
+            Point3D c = new Point3D(10, p.getY(), 0);
+            Vector a = new Vector(0, 0, half);
+            Vector b = new Vector(0, half, 0);
+            Sphere sphere = new Sphere(new Point3D(8, p.getY(), 0), 0.5);
+            sphere.setMaterial(new Material().setKt(0.5));
+            Geometries scene = new Geometries(surface.body(), sphere);
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene);
+            BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(scene);
+            Query query = bvh.newQuery();
+            int[] gathered = gatherLeaving(bvh, query, p, UP, c, a, b);
+            assertNotNull(gathered, kind + ": the pyramid must not be flat");
+            assertEquals(0, gathered[0], kind + ": the square must straddle the surface");
+            assertEquals(1, gathered[1], kind + ": something must be gathered");
+            assertFalse(query.isSubtreeGathered(), kind + ": few bodies are kept one by one");
+            return new Straddling(surface, p, c, a, b, bvh, query, scan, scan.newQuery());
+        }
+
+        /**
+         * The bundle's shadow rays as the renderer traces them ({@link BoundingVolumeHierarchyTest#shadowRays}).
+         *
+         * @param rnd   the generator
+         * @param count the number of rays
+         * @return the rays
+         */
+        double[][] shadowRays(Random rnd, int count) {
+            return BoundingVolumeHierarchyTest.shadowRays(rnd, p, UP, c, a, b, count);
+        }
+
+        /**
+         * Asserts that a ray's gathered transmittance is exactly the scan's, with and without the cut-off.
+         *
+         * @param ray   {ox, oy, oz, dx, dy, dz, distance}
+         * @param label the failure message
+         * @return the scan's answer without the cut-off
+         */
+        double assertAsScan(double[] ray, String label) {
+            double expected = 0;
+            for (double minK : new double[] { MIN_K, 0 }) {
+                expected = scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], minK,
+                        scanQuery);
+                assertEquals(expected, bvh.gatheredTransmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5],
+                        ray[6], minK, query), 0, () -> label + " " + Arrays.toString(ray) + " minK " + minK);
+            }
+            return expected;
+        }
+    }
+
+    /** The normal of the surfaces z = 0 scaled to DELTA: the starts p ± UP. */
+    private static final Vector UP = new Vector(0, 0, Ray.DELTA);
+
+    /** {@return the failure messages' name of a surface of one mesh or of Triangle objects} */
+    private static String kind(boolean asMesh) {
+        return asMesh ? "mesh" : "Triangle objects";
+    }
+
+    /**
+     * A surface along z = 0 with a low ridge, all of it between the starts (0.1 off it): flat over x
+     * from −2 to 1, down to −0.05 at x = 2, up to 0.05 at x = 3, back to 0 at x = 4, y from −1 to 2. A
+     * ray from (0.5, 0.3, 0) along x crosses the slope up at x = 2.5, inside a triangle.
+     *
+     * @return the triangles
+     */
+    private static List<double[]> ridge() {
+        List<double[]> list = new ArrayList<>();
+        double[] x = { -2, 1, 2, 3, 4 };
+        double[] h = { 0, 0, -0.05, 0.05, 0 };
+        for (int i = 0; i + 1 < x.length; ++i)
+            addCell(list, x[i], x[i + 1], -1, 2, h[i], h[i + 1]);
+        return list;
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittance} on a ray from neither start
+     * ({@link ShadowFrustum#setStarts}): the gather left out the triangles between the starts, and such a
+     * ray is traced through the whole hierarchy, with exactly the scan's answer, also when a left-out
+     * triangle blocks it.
+     * <p>
+     * An opaque ridge surface ({@link #ridge}), as a mesh and as Triangle objects, and a sphere (8, 0.3, 0),
+     * radius 0.5, kT 0.5; the bundle leaves p = (0.5, 0.3, 0), n = (0, 0, 0.1), to the square centred
+     * (10, 0.3, 0), half-sides (0, 0, 1) and (0, 1, 0), which straddles the surface.
+     */
+    @Test
+    void testGatheredTransmittanceFromNeitherStart() {
+        Random rnd = new Random(20261204);
+        Point3D p = new Point3D(0.5, 0.3, 0);
+        List<double[]> ridge = ridge();
+        for (boolean asMesh : new boolean[] { true, false }) {
+            String kind = kind(asMesh);
+            Straddling bundle = Straddling.of(Surface.of(ridge, asMesh, 0), p, 1, kind);
+            Point3D c = bundle.c();
+            Surface surface = bundle.surface();
+            ShadowFrustum frustum = bundle.query().getFrustum();
+            // every triangle of the ridge lies behind both starts and is left out
+            for (int t = 0; t < ridge.size(); ++t) {
+                assertTrue(frustum.behindStarts(ridge.get(t), 0, 3, 6), kind + ": triangle " + t + " behind both");
+                assertFalse(surface.mayMeet(t, frustum), kind + ": triangle " + t + " must be left out");
+            }
+            double[] along = rayFromTo(p, c);
+            // the left-out triangle that the ray from p along the surface hits: the slope up, at x = 2.5
+            double[] slope = ridge.get(4);
+            assertTrue(Triangle.intersect(slope[0], slope[1], slope[2], slope[3] - slope[0], slope[4] - slope[1],
+                    slope[5] - slope[2], slope[6] - slope[0], slope[7] - slope[1], slope[8] - slope[2],
+                    Triangle.parallelLimit(slope[3] - slope[0], slope[4] - slope[1], slope[5] - slope[2],
+                            slope[6] - slope[0], slope[7] - slope[1], slope[8] - slope[2]), along[0], along[1],
+                    along[2], along[3], along[4], along[5], along[6]) < Geometry.NO_HIT,
+                    kind + ": the ray along the surface must hit the left-out slope");
+
+            // ===== Equivalence Partitions Tests =====
+            // TC01: from p along the surface into the rising slope: start 0 (expects 0, the scan's answer)
+            assertEquals(0, frustum.startOf(along[0], along[1], along[2], along[3], along[4], along[5]),
+                    "TC01: " + kind + ": a ray from p starts at neither");
+            assertEquals(0, bundle.assertAsScan(along, "TC01: " + kind + ": from p along"), 0,
+                    "TC01: " + kind + ": the left-out slope blocks the ray from p");
+            // TC02: from p up to (10, 0.3, 0.5), over the ridge, into and out of the sphere (expects 0.25, the
+            // scan's)
+            assertEquals(0.25, bundle.assertAsScan(rayFromTo(p, new Point3D(10, 0.3, 0.5)),
+                    "TC02: " + kind + ": from p up"), 0, "TC02: " + kind + ": only the sphere dims it");
+            // TC03: from p + 0.3n (off both starts) along x, into the slope at x = 2.8 (expects 0, the scan's)
+            Point3D off = p.add(UP.scale(0.3));
+            assertEquals(0, bundle.assertAsScan(rayFromTo(off, c.add(UP.scale(0.3))),
+                    "TC03: " + kind + ": from off both starts"), 0, "TC03: " + kind + ": the slope blocks it");
+            // TC04: 100 rays from random points off both starts (within 0.1 of p) to the square: the scan's answers
+            int blocked = 0;
+            for (int r = 0; r < 100; ++r) {
+                double[] ray = rayFromTo(stray(rnd, p, Ray.DELTA), squarePoint(rnd, c, bundle.a(), bundle.b()));
+                assertEquals(0, frustum.startOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]), "TC04: start 0");
+                if (bundle.assertAsScan(ray, "TC04: " + kind + ": from off the starts") == 0)
+                    ++blocked;
+            }
+            assertTrue(blocked >= 5 && blocked <= 95, "TC04: " + kind + ": blocked " + blocked + " of 100");
+            // TC05: rays from the starts, as the renderer traces them: the scan's answers
+            for (double[] ray : bundle.shadowRays(rnd, 100))
+                bundle.assertAsScan(ray, "TC05: " + kind + ": from a start");
+
+            // ===== Boundary Values Tests =====
+            // TC11: from p + n exactly along the surface (d·n = 0): start 0, over the ridge, through the
+            // sphere (expects 0.25, the scan's)
+            double[] above = rayFromTo(p.add(UP), c.add(UP));
+            assertEquals(0, frustum.startOf(above[0], above[1], above[2], above[3], above[4], above[5]),
+                    "TC11: along the surface from p + n starts at neither");
+            assertEquals(0.25, bundle.assertAsScan(above, "TC11: " + kind), 0,
+                    "TC11: " + kind + ": only the sphere dims it");
+        }
+    }
+
+    /**
+     * Shelves over and under the surface z = 0 around p = (0, 0, 0), and the surface itself: at
+     * heights ±0.3 (x 2..6) and ±0.6 (x 3..7), y −3..3, and the floor [−2, 2]², two triangles each.
+     *
+     * @return the triangles, the floor's two first
+     */
+    private static List<double[]> shelves() {
+        List<double[]> list = new ArrayList<>();
+        addCell(list, -2, 2, -2, 2, 0, 0);
+        for (double h : new double[] { 0.3, -0.3 })
+            addCell(list, 2, 6, -3, 3, h, h);
+        for (double h : new double[] { 0.6, -0.6 })
+            addCell(list, 3, 7, -3, 3, h, h);
+        return list;
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gather} and
+     * {@link BoundingVolumeHierarchy#gatheredTransmittance} with the starts set: a gathered triangle
+     * behind one start only is kept for the rays from the other, and every ray gets exactly the scan's
+     * answer, transparent bodies multiplying; the surface between the starts is left out. The same for
+     * one mesh and for course-style Triangle objects.
+     * <p>
+     * The {@link #shelves} all kT 0.5, and a sphere (8, 0, 0), radius 0.5, kT 0.5, across the surface; the
+     * bundle leaves p = (0, 0, 0), n = (0, 0, 0.1), to the square centred (10, 0, 0), half-sides
+     * (0, 0, 2) and (0, 2, 0).
+     */
+    @Test
+    void testGatheredTransmittancePerStart() {
+        Random rnd = new Random(20261205);
+        Point3D p = Point3D.ZERO;
+        List<double[]> shelves = shelves();
+        for (boolean asMesh : new boolean[] { true, false }) {
+            String kind = kind(asMesh);
+            Straddling bundle = Straddling.of(Surface.of(shelves, asMesh, 0.5), p, 2, kind);
+            ShadowFrustum frustum = bundle.query().getFrustum();
+            Surface surface = bundle.surface();
+
+            // ===== Equivalence Partitions Tests =====
+            // TC01: the floor's triangles lie behind both starts (expects left out)
+            for (int t = 0; t < 2; ++t) {
+                assertTrue(frustum.behindStarts(shelves.get(t), 0, 3, 6), "TC01: " + kind + ": floor behind both");
+                assertFalse(surface.mayMeet(t, frustum), "TC01: " + kind + ": the floor must be left out");
+            }
+            // TC02: the shelves over the surface lie behind p − n only, those under it behind p + n only
+            // (expects kept)
+            for (int t = 2; t < shelves.size(); ++t) {
+                double[] v = shelves.get(t);
+                double[] data = { v[0], v[1], v[2], v[3] - v[0], v[4] - v[1], v[5] - v[2], v[6] - v[0], v[7] - v[1],
+                        v[8] - v[2] };
+                assertEquals(v[2] > 0 ? ShadowFrustum.BELOW : ShadowFrustum.ABOVE, frustum.startsBehind(data, 0),
+                        "TC02: " + kind + ": shelf triangle " + t + " behind one start");
+                assertFalse(frustum.behindStarts(v, 0, 3, 6), "TC02: " + kind + ": shelf " + t + " not behind both");
+                assertTrue(surface.mayMeet(t, frustum), "TC02: " + kind + ": shelf " + t + " must be kept");
+            }
+            // TC03: 400 rays from the starts to random points of the square, as the renderer traces them: the
+            // scan's answers, exactly; per start some are dimmed twice or more (two shelves, or into and out of
+            // the sphere: ≤ 0.25) and some open
+            int[] dimmedTwice = new int[3];
+            int[] open = new int[3];
+            for (double[] ray : bundle.shadowRays(rnd, 400)) {
+                int start = frustum.startOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]);
+                double answer = bundle.assertAsScan(ray, "TC03: " + kind + ": start " + start);
+                if (answer <= 0.25)
+                    ++dimmedTwice[start];
+                else if (answer == 1)
+                    ++open[start];
+            }
+            for (int start = ShadowFrustum.ABOVE; start <= ShadowFrustum.BELOW; ++start)
+                assertTrue(dimmedTwice[start] >= 20 && open[start] >= 20, "TC03: " + kind + ": from start " + start
+                        + " too few rays dimmed twice (" + dimmedTwice[start] + ") or open (" + open[start] + ")");
+            // TC04: from p + n through the shelf at 0.3 (x 5) and the one at 0.6 (x 6.67) to (10, 0, 1): start
+            // ABOVE (expects 0.25); its mirror from p − n (expects 0.25)
+            double[] up = rayFromTo(p.add(UP), new Point3D(10, 0, 1));
+            assertEquals(ShadowFrustum.ABOVE, frustum.startOf(up[0], up[1], up[2], up[3], up[4], up[5]), "TC04");
+            assertEquals(0.25, bundle.assertAsScan(up, "TC04: " + kind + ": up"), 0,
+                    "TC04: " + kind + ": two shelves over the surface");
+            double[] down = rayFromTo(p.add(UP.scale(-1)), new Point3D(10, 0, -1));
+            assertEquals(ShadowFrustum.BELOW, frustum.startOf(down[0], down[1], down[2], down[3], down[4], down[5]),
+                    "TC04");
+            assertEquals(0.25, bundle.assertAsScan(down, "TC04: " + kind + ": down"), 0,
+                    "TC04: " + kind + ": two shelves under the surface");
+
+            // ===== Boundary Values Tests =====
+            // TC11: from p + n to the square's lowest edge (10, 0, −2): it leaves to the other side, start 0,
+            // traced alone through the lower shelves (expects the scan's answer)
+            bundle.assertAsScan(rayFromTo(p.add(UP), new Point3D(10, 0, -2)),
+                    "TC11: " + kind + ": from p + n downwards");
+            // TC12: the floor alone: every triangle left out, the gather finds nothing (expects false)
+            Surface floor = Surface.of(shelves.subList(0, 2), asMesh, 0.5);
+            BoundingVolumeHierarchy floorBvh = BoundingVolumeHierarchy.build(new Geometries(floor.body()));
+            int[] floorGathered = gatherLeaving(floorBvh, floorBvh.newQuery(), p, UP, bundle.c(), bundle.a(),
+                    bundle.b());
+            assertNotNull(floorGathered, "TC12: the pyramid must not be flat");
+            assertEquals(0, floorGathered[1], "TC12: " + kind + ": the floor between the starts must be left out");
+        }
+    }
+
     /**
      * Composites without a body: an empty one, and one of empty composites.
      *

@@ -518,6 +518,151 @@ class ShadowFrustumTest {
         assertEquals(0, startsBehind(new ShadowFrustum(), flat(-0.5)), "TC16: no starts ever set");
     }
 
+    /**
+     * Whether a triangle lies behind both starts, given by its vertices, placed after a dummy vertex
+     * (the third first, so the places are used as given).
+     *
+     * @param frustum the frustum
+     * @param v       the vertices p1, p2, p3
+     * @return {@link ShadowFrustum#behindStarts} of them
+     */
+    private static boolean behindStarts(ShadowFrustum frustum, double... v) {
+        double[] vertices = { 0, 0, 0, v[6], v[7], v[8], v[0], v[1], v[2], v[3], v[4], v[5] };
+        return frustum.behindStarts(vertices, 6, 9, 3);
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#behindStarts}: true only when a triangle lies behind both
+     * starts p ± n, as {@link ShadowFrustum#startsBehind} tells.
+     * <p>
+     * The standard pyramid 0.1 thick, p = (0, 0, 0), n = (0, 0, 0.1): the starts are (0, 0, ±0.1).
+     */
+    @Test
+    void testBehindStarts() {
+        ShadowFrustum frustum = standard(0.1);
+        frustum.setStarts(0, 0, 0, 0, 0, 0.1);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a triangle of the surface (z = 0) between the starts (expects true)
+        assertTrue(behindStarts(frustum, flat(0)), "TC01: the surface's triangle lies behind both starts");
+        // TC02: a slanted triangle within the slab (z −0.05..0.05) (expects true)
+        assertTrue(behindStarts(frustum, -1, -1, -0.05, 1, -1, -0.05, 0, 1, 0.05), "TC02: within the slab");
+        // TC03: below p − n (z = −0.5), behind p + n only (expects false)
+        assertFalse(behindStarts(frustum, flat(-0.5)), "TC03: behind p + n only");
+        // TC04: above p + n (z = 0.5), behind p − n only (expects false)
+        assertFalse(behindStarts(frustum, flat(0.5)), "TC04: behind p − n only");
+        // TC05: crossing the surface from z = −1 to 1 (expects false)
+        assertFalse(behindStarts(frustum, -1, -1, -1, 1, -1, -1, 0, 1, 1), "TC05: a crossing triangle");
+        // TC06: crossing the plane of p + n only (z 0..0.2) (expects false)
+        assertFalse(behindStarts(frustum, -1, -1, 0, 1, -1, 0, 0, 1, 0.2), "TC06: crossing the plane of p + n");
+        // TC07: a slanted n (0.06, 0, 0.08), p = (1, 2, 3), a triangle of the plane 0.6x + 0.8z = 3.6 through p
+        // (expects true); the same triangle moved 0.5 along n (expects false)
+        ShadowFrustum slant = standard(0.1);
+        slant.setStarts(1, 2, 3, 0.06, 0, 0.08);
+        assertTrue(behindStarts(slant, 0.2, 1, 3.6, 1.8, 1, 2.4, 1, 3, 3), "TC07: a slanted surface");
+        assertFalse(behindStarts(slant, 0.5, 1, 4, 2.1, 1, 2.8, 1.3, 3, 3.4), "TC07: the slanted surface moved off");
+
+        // ===== Boundary Values Tests =====
+        // TC11: in the plane of p + n (z = 0.1) and of p − n (z = −0.1) (expects false)
+        assertFalse(behindStarts(frustum, flat(0.1)), "TC11: in the plane of p + n");
+        assertFalse(behindStarts(frustum, flat(-0.1)), "TC11: in the plane of p − n");
+        // TC12: 1e-6 inside the slab (within the rounding margin 2.8e-6) (expects false); 1e-5 inside (expects true)
+        assertFalse(behindStarts(frustum, flat(0.1 - 1e-6)), "TC12: within the margin of p + n");
+        assertFalse(behindStarts(frustum, flat(-0.1 + 1e-6)), "TC12: within the margin of p − n");
+        assertTrue(behindStarts(frustum, flat(0.1 - 1e-5)), "TC12: beyond the margin of p + n");
+        assertTrue(behindStarts(frustum, flat(-0.1 + 1e-5)), "TC12: beyond the margin of p − n");
+        // TC13: a triangle across the slab, from z = −0.1 + 1e-5 to 0.1 − 1e-5 (expects true); reaching
+        // within the margin of p − n, −0.1 + 1e-6 (expects false)
+        assertTrue(behindStarts(frustum, -1, -1, -0.1 + 1e-5, 1, -1, -0.1 + 1e-5, 0, 1, 0.1 - 1e-5),
+                "TC13: across the slab, beyond the margins");
+        assertFalse(behindStarts(frustum, -1, -1, -0.1 + 1e-6, 1, -1, -0.1 + 1e-5, 0, 1, 0.1 - 1e-5),
+                "TC13: across the slab, one vertex within the margin of p − n");
+        // TC14: no starts ever set, and after a new set (expects false)
+        assertFalse(behindStarts(new ShadowFrustum(), flat(0)), "TC14: no starts ever set");
+        frustum = standard(0.1);
+        assertFalse(behindStarts(frustum, flat(0)), "TC14: a new set forgets the starts");
+        // TC15: starts set with n = 0 (expects false)
+        frustum.setStarts(0, 0, 0, 0, 0, 0);
+        assertFalse(behindStarts(frustum, flat(0)), "TC15: a zero offset sets no starts");
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#behindStarts} against {@link ShadowFrustum#startsBehind}
+     * on seeded random starts and triangles: true exactly when the triangle lies behind both.
+     */
+    @Test
+    void testBehindStartsRandom() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 200 random starts (p in [−20, 20]³, n of random direction and length 1e-3..1) × 50 random
+        // triangles about p (vertices up to 1e-3..10 from p + a random height along n, heights mostly within
+        // the slab) (expects behindStarts == (startsBehind == ABOVE | BELOW) for every triangle)
+        Random rnd = new Random(20261203);
+        int both = ShadowFrustum.ABOVE | ShadowFrustum.BELOW;
+        int[] kinds = new int[4];
+        ShadowFrustum frustum = standard(0.1);
+        for (int s = 0; s < 200; ++s) {
+            double[] p = { 40 * rnd.nextDouble() - 20, 40 * rnd.nextDouble() - 20, 40 * rnd.nextDouble() - 20 };
+            double[] n = strayVector(rnd, Math.pow(10, -3 + 3 * rnd.nextDouble()));
+            double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            frustum.setStarts(p[0], p[1], p[2], n[0], n[1], n[2]);
+            for (int t = 0; t < 50; ++t) {
+                double size = Math.pow(10, -3 + 4 * rnd.nextDouble());
+                double[] v = new double[9];
+                for (int i = 0; i < 3; ++i) {
+                    // a height along n from −1.5 to 1.5 times |n|, plus a random offset across
+                    double height = 3 * rnd.nextDouble() - 1.5;
+                    double[] across = strayVector(rnd, size);
+                    double along = (across[0] * n[0] + across[1] * n[1] + across[2] * n[2]) / (length * length);
+                    for (int k = 0; k < 3; ++k)
+                        v[3 * i + k] = p[k] + height * n[k] + across[k] - along * n[k];
+                }
+                int behind = startsBehind(frustum, v);
+                ++kinds[behind];
+                int number = t;
+                assertEquals(behind == both, behindStarts(frustum, v), () -> "TC01: starts p " + Arrays.toString(p)
+                        + " n " + Arrays.toString(n) + ", triangle " + number + " " + Arrays.toString(v)
+                        + ": startsBehind " + behind);
+            }
+        }
+        // every answer of startsBehind is common: the comparison is not vacuous
+        for (int kind = 0; kind < 4; ++kind)
+            assertTrue(kinds[kind] >= 500, "TC01: too few triangles behind starts " + kind + ": " + kinds[kind]);
+    }
+
+    /** Test method for {@link ShadowFrustum#hasStarts}. */
+    @Test
+    void testHasStarts() {
+        ShadowFrustum frustum = new ShadowFrustum();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a new frustum (expects false)
+        assertFalse(frustum.hasStarts(), "TC01: a new frustum has no starts");
+        // TC02: after set (expects false)
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC02: the pyramid must be set");
+        assertFalse(frustum.hasStarts(), "TC02: set gives no starts");
+        // TC03: setStarts with a non-zero n (expects true)
+        frustum.setStarts(1, 2, 3, 0, 0.1, 0);
+        assertTrue(frustum.hasStarts(), "TC03: setStarts with a non-zero offset");
+        // TC04: a new set after setStarts (expects false)
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC04: the pyramid must be set");
+        assertFalse(frustum.hasStarts(), "TC04: a new set forgets the starts");
+
+        // ===== Boundary Values Tests =====
+        // TC11: setStarts with n = 0 (expects false), also right after a non-zero n
+        frustum.setStarts(1, 2, 3, 0, 0, 0);
+        assertFalse(frustum.hasStarts(), "TC11: a zero offset sets no starts");
+        frustum.setStarts(1, 2, 3, 0, 0, -0.1);
+        assertTrue(frustum.hasStarts(), "TC11: a non-zero offset sets starts");
+        frustum.setStarts(1, 2, 3, 0, 0, 0);
+        assertFalse(frustum.hasStarts(), "TC11: a zero offset takes the starts away");
+        // TC12: the smallest non-zero n, one coordinate Double.MIN_VALUE (expects true)
+        frustum.setStarts(1, 2, 3, Double.MIN_VALUE, 0, 0);
+        assertTrue(frustum.hasStarts(), "TC12: a tiny offset still sets starts");
+        // TC13: a refused (flat) set after setStarts (expects false)
+        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC13: the flat pyramid must be refused");
+        assertFalse(frustum.hasStarts(), "TC13: a refused set forgets the starts too");
+    }
+
     /** Test method for {@link ShadowFrustum#meetsPlane}. */
     @Test
     void testMeetsPlane() {
