@@ -501,7 +501,8 @@ public final class BoundingVolumeHierarchy {
      * every body.
      *
      * @param query this thread's scratch space, its frustum set to the bundle's pyramid
-     * @return false when no ray of the bundle can meet anything: then no ray needs to be tested
+     * @return false when no ray of the bundle can meet anything: then no ray needs to be tested (never
+     *         when a triangle was left out behind the starts, which a ray from neither may meet)
      */
     public boolean gather(Query query) {
         ShadowFrustum frustum = query.frustum;
@@ -515,7 +516,7 @@ public final class BoundingVolumeHierarchy {
         query.startCounts[ShadowFrustum.BELOW] = 0;
         if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0))
             gatherTree(query);
-        return found > 0 || query.gatheredCount != 0 || others.length > 0;
+        return found > 0 || query.gatheredCount != 0 || others.length > 0 || frustum.leftBehindStarts();
     }
 
     /**

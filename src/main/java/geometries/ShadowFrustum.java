@@ -42,6 +42,8 @@ public final class ShadowFrustum {
     private double rounding;
     /** Whether {@link #setStarts} was called since the last {@link #set}, and the point p and offset n it was given. */
     private boolean startsSet;
+    /** Whether {@link #behindStarts} has set a triangle aside since the starts were set. */
+    private boolean leftBehindStarts;
     private double startX;
     private double startY;
     private double startZ;
@@ -90,6 +92,7 @@ public final class ShadowFrustum {
         rounding = MARGIN * size;
         margin = rounding + thickness;
         startsSet = false;
+        leftBehindStarts = false;
         flatness = FLAT * size;
         valid = false;
         for (int side = 0; side < 4; ++side)
@@ -230,6 +233,7 @@ public final class ShadowFrustum {
         offsetY = ny;
         offsetZ = nz;
         startsSet = nx != 0 || ny != 0 || nz != 0;
+        leftBehindStarts = false;
     }
 
     /**
@@ -269,7 +273,8 @@ public final class ShadowFrustum {
 
     /**
      * Whether a triangle lies behind both starts ({@link #setStarts}), as {@link #startsBehind} takes
-     * it: then only a ray that starts at neither (one along the surface) may meet it.
+     * it: then only a ray that starts at neither (one along the surface) may meet it. The frustum
+     * remembers that it said so ({@link #leftBehindStarts}).
      *
      * @param vertices the coordinates of the vertices, three doubles each
      * @param p1       where the first vertex's x lies in vertices
@@ -283,9 +288,19 @@ public final class ShadowFrustum {
         double x = vertices[p1];
         double y = vertices[p1 + 1];
         double z = vertices[p1 + 2];
-        return startsBehind(along(x - startX, y - startY, z - startZ),
+        boolean behind = startsBehind(along(x - startX, y - startY, z - startZ),
                 along(vertices[p2] - x, vertices[p2 + 1] - y, vertices[p2 + 2] - z),
                 along(vertices[p3] - x, vertices[p3 + 1] - y, vertices[p3 + 2] - z)) == (ABOVE | BELOW);
+        leftBehindStarts |= behind;
+        return behind;
+    }
+
+    /**
+     * {@return whether {@link #behindStarts} has set a triangle aside since the starts were set: a ray
+     * from neither start may still meet it, so the bundle is not open}
+     */
+    boolean leftBehindStarts() {
+        return leftBehindStarts;
     }
 
     /** {@return whether starts are set ({@link #setStarts}): a ray from neither then tests every body} */
