@@ -648,26 +648,32 @@ public final class BoundingVolumeHierarchy {
      */
     public double gatheredTransmittance(double ox, double oy, double oz, double dx, double dy, double dz,
                                         double maxT, double minK, Query query) {
-        int start = 0;
-        if (query.frustum.hasStarts()) {
-            start = query.frustum.startOf(ox, oy, oz, dx, dy, dz);
-            if (start == 0) // the gather left out bodies that only the rays from the starts miss
-                return transmittance(ox, oy, oz, dx, dy, dz, maxT, minK, query);
-        }
-        if (!throughGatheredUnbounded(query, ox, oy, oz, dx, dy, dz, maxT, minK))
+        int start = query.frustum.hasStarts() ? query.frustum.startOf(ox, oy, oz, dx, dy, dz) : 0;
+        if (start == 0 && query.frustum.hasStarts()) // the gather left out bodies only the rays from the starts miss
+            return transmittance(ox, oy, oz, dx, dy, dz, maxT, minK, query);
+        if (!throughGatheredUnbounded(query, ox, oy, oz, dx, dy, dz, maxT, minK)
+                || !throughGathered(query, start, ox, oy, oz, dx, dy, dz, minK))
             return 0;
-        if (query.gatheredCount < 0) {
-            if (!walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK))
-                return 0;
-        } else {
-            // with no starts set, every gathered body in order
-            int[] list = start == 0 ? ALL_GATHERED : query.startLists[start];
-            int count = start == 0 ? query.gatheredCount : query.startCounts[start];
-            for (int k = 0; k < count; ++k)
-                if (!visitGathered(query, list[k], ox, oy, oz, dx, dy, dz, minK))
-                    return 0;
-        }
         return throughOthers(query.ktr, ox, oy, oz, dx, dy, dz, maxT, minK);
+    }
+
+    /**
+     * Dims the query's transparency by the gathered bodies along a ray of the bundle: the kept subtree,
+     * walked, or the bodies a ray from its start tests (every gathered body when no starts are set).
+     *
+     * @param start where the ray starts, as the frustum's {@link ShadowFrustum#startOf} tells
+     * @return false when they block the ray
+     */
+    private boolean throughGathered(Query query, int start, double ox, double oy, double oz, double dx, double dy,
+                                    double dz, double minK) {
+        if (query.gatheredCount < 0)
+            return walk(query, query.subtree, ox, oy, oz, dx, dy, dz, true, minK);
+        int[] list = start == 0 ? ALL_GATHERED : query.startLists[start];
+        int count = start == 0 ? query.gatheredCount : query.startCounts[start];
+        for (int k = 0; k < count; ++k)
+            if (!visitGathered(query, list[k], ox, oy, oz, dx, dy, dz, minK))
+                return false;
+        return true;
     }
 
     /**
