@@ -137,7 +137,7 @@ public final class BoundingVolumeHierarchy {
          * When the frustum's starts are set: per start of a ray, {@link ShadowFrustum#ABOVE} or
          * {@link ShadowFrustum#BELOW} as its {@link ShadowFrustum#startOf} tells, the places in
          * {@link #gathered} of the bodies a ray from there tests, in order (not the triangles behind
-         * that start), and how many.
+         * that start), and how many. Place 0 is not used: a ray from neither start tests them all.
          */
         private final int[][] startLists = new int[3][MAX_GATHERED];
         private final int[] startCounts = new int[3];

@@ -12,6 +12,10 @@ package geometries;
  * pyramid by more than the thickness plus a margin (a small fraction of the pyramid's size), so
  * rounding in the rays' own arithmetic never hides a blocker. An instance is scratch space, set
  * again for every bundle, and used by one thread.
+ * <p>
+ * The surface the rays leave lies around the apex, where no face of the pyramid sets it aside: a
+ * back face ({@link #setBackFace}) does when every ray leaves the surface on one side, and the rays'
+ * two starts ({@link #setStarts}) do when they leave it on both sides.
  */
 public final class ShadowFrustum {
     /** How far outside, relative to the pyramid's size, a box or plane must be to be set aside. */
@@ -24,14 +28,22 @@ public final class ShadowFrustum {
     static final int BELOW = 2;
     /** The pyramid's faces: four sides and the base. */
     private static final int PLANES = 5;
+    /** The states of {@link #backFace}. */
+    private static final int NO_BACK_FACE = 0;
+    private static final int BACK_FACE_ASKED = 1;
+    private static final int BACK_FACE_PLACED = 2;
 
     /**
      * The four sides and the base, then the back face ({@link #setBackFace}), as (unit outward normal,
      * offset): outside where n·x − offset > margin.
      */
     private final double[] planes = new double[4 * (PLANES + 1)];
-    /** Whether the back face is set since the last {@link #set}. */
-    private boolean backFaceSet;
+    /** The back face since the last {@link #set}: none, asked for but not placed yet, or placed in {@link #planes}. */
+    private int backFace;
+    /** The direction of the back face asked for ({@link #setBackFace}). */
+    private double backX;
+    private double backY;
+    private double backZ;
     /** The apex and the four corners of the base, three coordinates each. */
     private final double[] vertices = new double[15];
     /** The box around the vertices, {minX, minY, minZ, maxX, maxY, maxZ}. */
@@ -102,35 +114,55 @@ public final class ShadowFrustum {
         double ny = az * bx - ax * bz;
         double nz = ax * by - ay * bx;
         valid = setPlane(4, nx, ny, nz, nx * cx + ny * cy + nz * cz, ox, oy, oz);
-        backFaceSet = false;
+        backFace = NO_BACK_FACE;
         return valid;
     }
 
     /**
-     * Adds a back face to the pyramid of the last {@link #set}: the plane through the apex across a
-     * direction, when the whole base lies ahead of it along that direction by more than the margin.
+     * Asks for a back face of the pyramid of the last {@link #set}: the plane through the apex across a
+     * direction, set when the whole base lies ahead of it along that direction by more than the margin.
      * The pyramid lies ahead of that plane, so what lies behind it by more than the thickness and
      * margin meets no ray: the surface a bundle of shadow rays leaves, seen from an apex a little off
      * it, with the normal as the direction. Plane-by-plane tests miss such a triangle when it lies
      * around the apex, outside the pyramid but not outside any one of its other faces. The back face
      * sets triangles aside ({@link #meetsTriangle}), not boxes: a box of the surface's triangles
-     * around the apex mostly reaches over the plane, and every box would pay a sixth test. The next
-     * {@link #set} takes the back face away.
+     * around the apex mostly reaches over the plane, and every box would pay a sixth test. It is placed
+     * when first needed ({@link #hasBackFace}), so a bundle that meets no triangle does not pay for it.
+     * The next {@link #set} takes the back face away.
      *
      * @param nx the direction, x
      * @param ny the direction, y
      * @param nz the direction, z
-     * @return true when the back face was added; false, adding nothing, when the pyramid is not set
-     *         (or flat), the direction is not a finite non-zero vector or the base does not lie ahead
      */
-    public boolean setBackFace(double nx, double ny, double nz) {
-        double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+    public void setBackFace(double nx, double ny, double nz) {
+        backX = nx;
+        backY = ny;
+        backZ = nz;
+        backFace = BACK_FACE_ASKED;
+    }
+
+    /**
+     * Whether the pyramid has a back face: one was asked for since the last {@link #set}
+     * ({@link #setBackFace}) and could be placed, the pyramid set, the direction a finite non-zero
+     * vector and the base ahead of the plane. Places it on the first call after it is asked for.
+     *
+     * @return true when the back face is placed
+     */
+    public boolean hasBackFace() {
+        if (backFace == BACK_FACE_ASKED)
+            backFace = placeBackFace() ? BACK_FACE_PLACED : NO_BACK_FACE;
+        return backFace == BACK_FACE_PLACED;
+    }
+
+    /** Places the back face asked for in {@link #planes}; false, placing nothing, when it cannot be. */
+    private boolean placeBackFace() {
+        double length = Math.sqrt(backX * backX + backY * backY + backZ * backZ);
         if (!valid || !(length > 0) || length == Double.POSITIVE_INFINITY)
             return false;
         double inverse = 1 / length;
-        double ux = nx * inverse;
-        double uy = ny * inverse;
-        double uz = nz * inverse;
+        double ux = backX * inverse;
+        double uy = backY * inverse;
+        double uz = backZ * inverse;
         double[] v = vertices;
         for (int i = 3; i < 15; i += 3)
             if (!(ux * (v[i] - v[0]) + uy * (v[i + 1] - v[1]) + uz * (v[i + 2] - v[2]) > margin))
@@ -140,7 +172,6 @@ public final class ShadowFrustum {
         planes[p + 1] = -uy;
         planes[p + 2] = -uz;
         planes[p + 3] = -(ux * v[0] + uy * v[1] + uz * v[2]);
-        backFaceSet = true;
         return true;
     }
 
@@ -396,7 +427,7 @@ public final class ShadowFrustum {
             return true;
         double[] pl = planes;
         int back = 4 * PLANES;
-        if (backFaceSet && outside(pl[back], pl[back + 1], pl[back + 2], pl[back + 3], vertices, p1, p2, p3))
+        if (hasBackFace() && outside(pl[back], pl[back + 1], pl[back + 2], pl[back + 3], vertices, p1, p2, p3))
             return false; // first: it sets aside the many triangles around the apex
         for (int p = 0; p < 4 * PLANES; p += 4)
             if (outside(pl[p], pl[p + 1], pl[p + 2], pl[p + 3], vertices, p1, p2, p3))

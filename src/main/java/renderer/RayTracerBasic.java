@@ -457,8 +457,10 @@ public class RayTracerBasic extends RayTracerBase {
 
         /**
          * Gathers the bodies the bundle's rays may meet. When all the rays leave the surface on the
-         * same side, they start at one point DELTA off the surface, the apex of their pyramid;
-         * otherwise the pyramid starts at the point itself and is DELTA thick.
+         * same side, they start at one point DELTA off the surface, the apex of their pyramid, and the
+         * surface around the point lies behind the pyramid's back face through it; otherwise the
+         * pyramid starts at the point itself and is DELTA thick, and the frustum is told the rays' two
+         * starts, DELTA off the surface on either side, which the surface lies behind.
          *
          * @return how the bundle's rays are to be traced
          */
@@ -483,7 +485,6 @@ public class RayTracerBasic extends RayTracerBase {
             if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
                     cz + side * nz, ax, ay, az, bx, by, bz, thickness))
                 return Bundle.WHOLE;
-            // the surface around the point lies behind the rays' starts
             if (side != 0)
                 frustum.setBackFace(side * nx, side * ny, side * nz);
             else

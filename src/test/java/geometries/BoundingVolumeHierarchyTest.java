@@ -2275,9 +2275,10 @@ class BoundingVolumeHierarchyTest {
         if (!frustum.set(apex.getX(), apex.getY(), apex.getZ(), base.getX(), base.getY(), base.getZ(), a.getX(),
                 a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), side == 0 ? Ray.DELTA : 0))
             return null;
-        if (side != 0)
-            assertTrue(frustum.setBackFace(side * n.getX(), side * n.getY(), side * n.getZ()),
-                    "the base of a bundle leaving on one side must lie ahead of its back face");
+        if (side != 0) {
+            frustum.setBackFace(side * n.getX(), side * n.getY(), side * n.getZ());
+            assertTrue(frustum.hasBackFace(), "the base of a bundle leaving on one side must lie ahead of its back face");
+        }
         else
             frustum.setStarts(p.getX(), p.getY(), p.getZ(), n.getX(), n.getY(), n.getZ());
         return new int[] { side, bvh.gather(query) ? 1 : 0 };

@@ -302,10 +302,20 @@ class ShadowFrustumTest {
     }
 
     /**
-     * Test method for {@link ShadowFrustum#setBackFace}: the plane through the apex across a direction
+     * Asks a frustum for a back face ({@link ShadowFrustum#setBackFace}).
+     *
+     * @return whether it has one then ({@link ShadowFrustum#hasBackFace})
+     */
+    private static boolean backFace(ShadowFrustum frustum, double nx, double ny, double nz) {
+        frustum.setBackFace(nx, ny, nz);
+        return frustum.hasBackFace();
+    }
+
+    /**
+     * Test method for {@link ShadowFrustum#setBackFace} and {@link ShadowFrustum#hasBackFace}: the plane through the apex across a direction
      * the whole base lies ahead along sets aside the triangles behind it, also around the apex where no
-     * other face does (boxes it leaves to the other faces); it is refused, changing nothing, when the
-     * base does not lie ahead or the pyramid or direction is not proper, and the next
+     * other face does (boxes it leaves to the other faces); it is refused, setting nothing aside, when
+     * the base does not lie ahead or the pyramid or direction is not proper, and the next
      * {@link ShadowFrustum#set} takes it away.
      */
     @Test
@@ -328,28 +338,28 @@ class ShadowFrustumTest {
         assertTrue(meetsTriangle(frustum, triangle), "TC01: without a back face the triangle behind must be met");
         // TC02: the direction (1, 1, 1), the base ahead along it: true, and the triangle behind is set
         // aside; the box behind still meets (the back face tests triangles only)
-        assertTrue(frustum.setBackFace(1, 1, 1), "TC02: a back face with the base ahead must be set");
+        assertTrue(backFace(frustum, 1, 1, 1), "TC02: a back face with the base ahead must be set");
         assertFalse(meetsTriangle(frustum, triangle), "TC02: the triangle behind the back face must be set aside");
         assertTrue(meets(frustum, behind), "TC02: the back face must not set a box aside");
         // TC03: a box ahead and a triangle crossing the plane are still met
         assertTrue(meets(frustum, ahead), "TC03: a box inside the pyramid must be met");
         assertTrue(meetsTriangle(frustum, crossing), "TC03: a triangle across the back face must be met");
         // TC04: the same direction not normalised, (0.5, 0.5, 0.5): the same back face
-        assertTrue(slanted(frustum).setBackFace(0.5, 0.5, 0.5), "TC04: the length of the direction must not matter");
+        assertTrue(backFace(slanted(frustum), 0.5, 0.5, 0.5), "TC04: the length of the direction must not matter");
         assertFalse(meetsTriangle(frustum, triangle), "TC04: the triangle behind the back face must be set aside");
         // TC05: the next set takes the back face away: the box behind met again
         slanted(frustum);
         assertTrue(meets(frustum, behind), "TC05: a new set must take the back face away");
         assertTrue(meetsTriangle(frustum, triangle), "TC05: a new set must take the back face away (triangle)");
         // TC06: a direction some base corner lies behind, (−1, −1, −1): false, and nothing is set aside more
-        assertFalse(frustum.setBackFace(-1, -1, -1), "TC06: a back face with the base behind must be refused");
+        assertFalse(backFace(frustum, -1, -1, -1), "TC06: a back face with the base behind must be refused");
         assertTrue(meetsTriangle(frustum, triangle), "TC06: a refused back face must set nothing aside");
         assertTrue(meets(frustum, ahead), "TC06: a refused back face must set nothing aside");
 
         // ===== Boundary Values Tests =====
         // TC11: the back face set, a triangle in the plane x + y + z = c: 1e-6 behind the back plane
         // (within the margin 1.7e-6): met; 1e-4 behind it: set aside
-        assertTrue(frustum.setBackFace(1, 1, 1), "TC11: the back face must be set");
+        assertTrue(backFace(frustum, 1, 1, 1), "TC11: the back face must be set");
         for (double behindBy : new double[] { 1e-6, 1e-4 }) {
             double c = -behindBy * root3;
             assertEquals(behindBy < 1.7e-6, meetsTriangle(frustum, 1, 0, c - 1, -1, 1, c, 0, -1, c + 1),
@@ -361,30 +371,36 @@ class ShadowFrustumTest {
         // corners (−2, ±2, 10) lie (10s − 2)/√(1 + s²) ahead
         ShadowFrustum standard = standard();
         // TC13: s = 0.2, the corners in the plane: false; s = 0.1, behind it: false
-        assertFalse(standard.setBackFace(1, 0, 0.2), "TC13: base corners in the back plane must refuse it");
-        assertFalse(standard.setBackFace(1, 0, 0.1), "TC13: base corners behind the back plane must refuse it");
+        assertFalse(backFace(standard, 1, 0, 0.2), "TC13: base corners in the back plane must refuse it");
+        assertFalse(backFace(standard, 1, 0, 0.1), "TC13: base corners behind the back plane must refuse it");
         // TC14: s = 0.2 + 1e-7, ahead by 0.98e-6 (within the margin): false; s = 0.2 + 1e-6, ahead by
         // 9.8e-6: true
-        assertFalse(standard.setBackFace(1, 0, 0.2 + 1e-7), "TC14: corners ahead within the margin must refuse it");
-        assertTrue(standard.setBackFace(1, 0, 0.2 + 1e-6), "TC14: corners ahead beyond the margin must allow it");
+        assertFalse(backFace(standard, 1, 0, 0.2 + 1e-7), "TC14: corners ahead within the margin must refuse it");
+        assertTrue(backFace(standard, 1, 0, 0.2 + 1e-6), "TC14: corners ahead beyond the margin must allow it");
         // TC15: a zero, NaN or infinite direction: false, and the triangle behind the slanted apex still met
         slanted(frustum);
         double inf = Double.POSITIVE_INFINITY;
         double[][] bad = { { 0, 0, 0 }, { Double.NaN, 1, 1 }, { 1, 1, Double.NaN }, { inf, 1, 1 }, { 1, -inf, 1 } };
         for (double[] d : bad) {
-            assertFalse(frustum.setBackFace(d[0], d[1], d[2]), "TC15: the direction " + Arrays.toString(d)
+            assertFalse(backFace(frustum, d[0], d[1], d[2]), "TC15: the direction " + Arrays.toString(d)
                     + " must be refused");
             assertTrue(meetsTriangle(frustum, triangle), "TC15: a refused back face must set nothing aside");
         }
         // TC16: before any set, and after a refused (flat) set: false, every box met
         ShadowFrustum fresh = new ShadowFrustum();
-        assertFalse(fresh.setBackFace(0, 0, 1), "TC16: an unset frustum must refuse a back face");
+        assertFalse(backFace(fresh, 0, 0, 1), "TC16: an unset frustum must refuse a back face");
         assertTrue(meets(fresh, -1, -1, -2, 1, 1, -1), "TC16: an unset frustum must set no box aside");
         assertFalse(standard.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC16: the flat pyramid must be refused");
-        assertFalse(standard.setBackFace(0, 0, 1), "TC16: a refused frustum must refuse a back face");
+        assertFalse(backFace(standard, 0, 0, 1), "TC16: a refused frustum must refuse a back face");
         assertTrue(meets(standard, -1, -1, -2, 1, 1, -1), "TC16: a refused frustum must set no box aside");
         assertTrue(meetsTriangle(standard, -5, -5, -1, 5, -5, -1, 0, 5, -1),
                 "TC16: a refused frustum must set no triangle aside");
+        // TC17: none asked for since the last set (expects false); a back face placed, then one asked for
+        // that cannot be: the later replaces it (expects false, the triangle behind met again)
+        assertFalse(slanted(frustum).hasBackFace(), "TC17: no back face was asked for");
+        assertTrue(backFace(frustum, 1, 1, 1), "TC17: the back face must be set");
+        assertFalse(backFace(frustum, -1, -1, -1), "TC17: the later back face cannot be placed");
+        assertTrue(meetsTriangle(frustum, triangle), "TC17: the later request must replace the earlier");
     }
 
     /**
