@@ -648,9 +648,31 @@ public final class BoundingVolumeHierarchy {
      */
     public double gatheredTransmittance(double ox, double oy, double oz, double dx, double dy, double dz,
                                         double maxT, double minK, Query query) {
-        int start = query.frustum.hasStarts() ? query.frustum.startOf(ox, oy, oz, dx, dy, dz) : 0;
-        if (start == 0 && query.frustum.hasStarts()) // the gather left out bodies only the rays from the starts miss
-            return transmittance(ox, oy, oz, dx, dy, dz, maxT, minK, query);
+        return query.frustum.hasStarts() ? fromStart(ox, oy, oz, dx, dy, dz, maxT, minK, query)
+                : throughBundle(0, ox, oy, oz, dx, dy, dz, maxT, minK, query);
+    }
+
+    /**
+     * {@link #gatheredTransmittance} when the frustum's starts are set: a ray from neither start is
+     * traced alone through the whole hierarchy, as the gather left out bodies only the rays from the
+     * starts miss.
+     */
+    private double fromStart(double ox, double oy, double oz, double dx, double dy, double dz, double maxT,
+                             double minK, Query query) {
+        int start = query.frustum.startOf(ox, oy, oz, dx, dy, dz);
+        return start == 0 ? transmittance(ox, oy, oz, dx, dy, dz, maxT, minK, query)
+                : throughBundle(start, ox, oy, oz, dx, dy, dz, maxT, minK, query);
+    }
+
+    /**
+     * The transparency along a ray of the bundle from a start through what the last {@link #gather}
+     * found: the unbounded bodies, the gathered ones and the intersectables that are not geometries.
+     *
+     * @param start where the ray starts, as the frustum's {@link ShadowFrustum#startOf} tells (0 when
+     *              no starts are set)
+     */
+    private double throughBundle(int start, double ox, double oy, double oz, double dx, double dy, double dz,
+                                 double maxT, double minK, Query query) {
         if (!throughGatheredUnbounded(query, ox, oy, oz, dx, dy, dz, maxT, minK)
                 || !throughGathered(query, start, ox, oy, oz, dx, dy, dz, minK))
             return 0;

@@ -241,6 +241,28 @@ public final class ShadowFrustum {
     }
 
     /**
+     * Tells the pyramid the surface a bundle of shadow rays leaves, as a renderer moves their starts
+     * off it: by a vector n on the side each ray leaves to. When all the rays leave to one side, they
+     * start at the apex and the back face across n (or −n) is asked for ({@link #setBackFace}); when
+     * they leave to both, the starts are set ({@link #setStarts}).
+     *
+     * @param side 1 when every ray leaves to n's side, −1 when every ray leaves to the other, 0 when
+     *             they leave to both
+     * @param px   the point p the rays leave, x
+     * @param py   the same for y
+     * @param pz   the same for z
+     * @param nx   the offset n of the starts, x
+     * @param ny   the same for y
+     * @param nz   the same for z
+     */
+    public void setLeaving(int side, double px, double py, double pz, double nx, double ny, double nz) {
+        if (side != 0)
+            setBackFace(side * nx, side * ny, side * nz);
+        else
+            setStarts(px, py, pz, nx, ny, nz);
+    }
+
+    /**
      * Tells where the bundle's rays start, when they leave a surface on both sides of it (the pyramid's
      * base straddles the surface's plane, and no back face can be set): a ray that leaves to the side
      * a vector n points to starts at p + n, one that leaves to the other side at p − n, one along the

@@ -3,6 +3,8 @@ package renderer;
 import geometries.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
 import geometries.ShadowFrustum;
+import geometries.Triangle;
+import geometries.TriangleMesh;
 import lighting.AreaLightSource;
 import lighting.LightSource;
 import primitives.Color;
@@ -288,7 +290,8 @@ public class RayTracerBasic extends RayTracerBase {
         BoundingVolumeHierarchy bvh = accelerator();
         Point3D point = geoPoint.point;
         // the ray to the light itself, or to the centre of its square
-        LightSquare square = state.lightSquare().setPoint(point, n, l, bvh, state.query(bvh));
+        LightSquare square = state.lightSquare().setPoint(point, n, l, bvh, state.query(bvh))
+                .setFacet(geoPoint.geometry instanceof TriangleMesh || geoPoint.geometry instanceof Triangle);
         double distance = light.getDistance(point);
         if (isSoftShadows() && light instanceof AreaLightSource areaLight && areaLight.getEdges() > 0)
             return calcSoftShadows(areaLight, square, distance, state);
@@ -386,11 +389,14 @@ public class RayTracerBasic extends RayTracerBase {
         private BoundingVolumeHierarchy bvh;
         private BoundingVolumeHierarchy.Query query;
         private Bundle bundle = Bundle.WHOLE;
+        /** Whether the lit point lies on a triangle (of a mesh, or a {@link Triangle}): see {@link #setFacet}. */
+        private boolean facet;
 
         /**
          * Sets the lit point and the ray from it to the light (to the centre of the light's square),
          * the same ray as {@link Ray#Ray(Point3D, Vector, Vector)} makes from the point toward −l.
-         * No square is set: until {@link #setSquare}, rays walk the whole hierarchy.
+         * No square is set: until {@link #setSquare}, rays walk the whole hierarchy; the point is not
+         * taken to lie on a triangle until {@link #setFacet} says so.
          *
          * @param p     the lit point
          * @param n     the surface normal at the point
@@ -416,6 +422,7 @@ public class RayTracerBasic extends RayTracerBase {
             this.bvh = bvh;
             this.query = query;
             this.bundle = Bundle.WHOLE;
+            this.facet = false;
             double dirX = -l.getX();
             double dirY = -l.getY();
             double dirZ = -l.getZ();
@@ -429,6 +436,20 @@ public class RayTracerBasic extends RayTracerBase {
             this.centreDx = dirX / length;
             this.centreDy = dirY / length;
             this.centreDz = dirZ / length;
+            return this;
+        }
+
+        /**
+         * Tells whether the lit point of the last {@link #setPoint} lies on a triangle (of a mesh, or a
+         * {@link Triangle}). Only then is the surface around it set aside from the bundle's gather
+         * ({@link geometries.ShadowFrustum#setLeaving}): its neighbouring triangles are the bodies that
+         * test serves, and the bundles of other points (a sphere's, a plane's) do without its cost.
+         *
+         * @param onTriangle whether the point lies on a triangle
+         * @return this light square
+         */
+        LightSquare setFacet(boolean onTriangle) {
+            this.facet = onTriangle;
             return this;
         }
 
@@ -457,10 +478,10 @@ public class RayTracerBasic extends RayTracerBase {
 
         /**
          * Gathers the bodies the bundle's rays may meet. When all the rays leave the surface on the
-         * same side, they start at one point DELTA off the surface, the apex of their pyramid, and the
-         * surface around the point lies behind the pyramid's back face through it; otherwise the
-         * pyramid starts at the point itself and is DELTA thick, and the frustum is told the rays' two
-         * starts, DELTA off the surface on either side, which the surface lies behind.
+         * same side, they start at one point DELTA off the surface, the apex of their pyramid;
+         * otherwise the pyramid starts at the point itself and is DELTA thick. For a point on a
+         * triangle ({@link #setFacet}), the frustum is told the surface the rays leave, which lies
+         * behind their starts ({@link geometries.ShadowFrustum#setLeaving}).
          *
          * @return how the bundle's rays are to be traced
          */
@@ -485,10 +506,8 @@ public class RayTracerBasic extends RayTracerBase {
             if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
                     cz + side * nz, ax, ay, az, bx, by, bz, thickness))
                 return Bundle.WHOLE;
-            if (side != 0)
-                frustum.setBackFace(side * nx, side * ny, side * nz);
-            else
-                frustum.setStarts(px, py, pz, nx, ny, nz);
+            if (facet)
+                frustum.setLeaving((int) side, px, py, pz, nx, ny, nz);
             if (!bvh.gather(query))
                 return Bundle.OPEN;
             return query.isSubtreeGathered() ? Bundle.PACKET : Bundle.GATHERED;

@@ -404,6 +404,38 @@ class ShadowFrustumTest {
     }
 
     /**
+     * Test method for {@link ShadowFrustum#setLeaving}: a bundle leaving a surface on one side asks for
+     * the back face across n (or −n), one leaving on both sides sets the starts.
+     */
+    @Test
+    void testSetLeaving() {
+        // the standard pyramid (apex 0, base (±2, ±2, 10)) leaving the surface z = 0, n = (0, 0, 0.1)
+        // ===== Equivalence Partitions Tests =====
+        // TC01: side 1: the back face across n (expects a back face, no starts)
+        ShadowFrustum above = standard();
+        above.setLeaving(1, 0, 0, -0.1, 0, 0, 0.1);
+        assertTrue(above.hasBackFace(), "TC01: leaving on n's side must give a back face");
+        assertFalse(above.hasStarts(), "TC01: leaving on one side must set no starts");
+        // TC02: side −1 with n = (0, 0, −0.1): the back face across −n, the base ahead along it (expects
+        // a back face)
+        ShadowFrustum below = standard();
+        below.setLeaving(-1, 0, 0, 0.1, 0, 0, -0.1);
+        assertTrue(below.hasBackFace(), "TC02: leaving on the other side must give a back face across −n");
+        // TC03: side 0: the starts p ± n (expects starts, no back face, p + n a start)
+        ShadowFrustum both = standard(0.1);
+        both.setLeaving(0, 0, 0, 0, 0, 0, 0.1);
+        assertTrue(both.hasStarts(), "TC03: leaving on both sides must set the starts");
+        assertFalse(both.hasBackFace(), "TC03: leaving on both sides must give no back face");
+        assertEquals(ShadowFrustum.ABOVE, both.startOf(0, 0, 0.1, 0, 0, 1), "TC03: p + n must be a start");
+
+        // ===== Boundary Values Tests =====
+        // TC11: side 1 with n pointing away from the base: the back face cannot be placed (expects none)
+        ShadowFrustum wrong = standard();
+        wrong.setLeaving(1, 0, 0, 0.1, 0, 0, -0.1);
+        assertFalse(wrong.hasBackFace(), "TC11: a back face the base lies behind must not be placed");
+    }
+
+    /**
      * Test method for {@link ShadowFrustum#setStarts} and {@link ShadowFrustum#startOf}: a ray from
      * exactly p + n to n's side starts {@link ShadowFrustum#ABOVE}, one from exactly p − n to the other
      * side {@link ShadowFrustum#BELOW}, any other 0.

@@ -1,6 +1,7 @@
 package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -19,11 +20,13 @@ import org.junit.jupiter.api.Test;
 
 import geometries.BoundingVolumeHierarchy;
 import geometries.Geometries;
+import geometries.Geometry;
 import geometries.Intersectable.GeoPoint;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
 import lighting.LightSource;
@@ -628,6 +631,44 @@ class RayTracerBasicTest {
         // TC11: sqrtBeamNum 1 (the centre ray and one more)
         RayTracerBasic single = softTracer(1, halfPlane(0, 10, new Material()));
         assertTrue(shadowPathAllocation(single, light, 1000) < 1000, "TC11: one cell must allocate nothing");
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#transparency}: the surface a bundle leaves is set aside
+     * only for a point on a triangle (a mesh's or a {@link Triangle}): its frustum gets the back face
+     * then, and the shadow factor is the same as over a plane.
+     */
+    @Test
+    void testSurfaceSetAsideOnTriangles() {
+        PointLight light = squareLight();
+        TriangleMesh mesh = new TriangleMesh(new double[] { -50, -50, 0, 50, -50, 0, 50, 50, 0, -50, 50, 0 },
+                new int[] { 0, 1, 2, 0, 2, 3 });
+        Triangle triangle = new Triangle(new Point3D(-50, -50, 0), new Point3D(50, -50, 0), new Point3D(0, 50, 0));
+        Plane plane = floor(new Material(), Color.BLACK);
+        Scene scene = new Scene("facets");
+        scene.geometries.add(mesh, triangle, halfPlane(0, 10, new Material()));
+        RayTracerBasic tracer = new RayTracerBasic(scene);
+        tracer.setSoftShadows(true).setSqrtBeamNum(9);
+        tracer.prepare();
+        Vector l = light.getL(Point3D.ZERO);
+        double[] factors = new double[3];
+        boolean[] backFaces = new boolean[3];
+        Geometry[] bodies = { mesh, triangle, plane };
+        for (int k = 0; k < bodies.length; ++k) {
+            ThreadState state = tracer.startPixel(0, 0);
+            factors[k] = tracer.transparency(light, l, FLOOR_NORMAL, new GeoPoint(bodies[k], Point3D.ZERO), state);
+            backFaces[k] = state.query(tracer.accelerator()).getFrustum().hasBackFace();
+        }
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a point on a mesh and one on a Triangle (expects a back face); on a plane (expects none)
+        assertTrue(backFaces[0], "TC01: a point on a mesh must set its surface aside");
+        assertTrue(backFaces[1], "TC01: a point on a Triangle must set its surface aside");
+        assertFalse(backFaces[2], "TC01: a point on a plane must not pay for the back face");
+        // TC02: the same point and pixel: the same shadow factor whatever it lies on (half the light
+        // hidden by the half-plane: about 0.5)
+        assertEquals(factors[2], factors[0], 0, "TC02: the mesh's point must get the plane's factor");
+        assertEquals(factors[2], factors[1], 0, "TC02: the Triangle's point must get the plane's factor");
+        assertEquals(0.5, factors[2], 0.1, "TC02: half the light must be hidden");
     }
 
     /**
