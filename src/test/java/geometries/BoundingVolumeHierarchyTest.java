@@ -2334,7 +2334,7 @@ class BoundingVolumeHierarchyTest {
     }
 
     /**
-     * A random bundle leaving a random point of a mesh's triangle: its square straddling the tangent
+     * A random bundle leaving a random point of a mesh's triangle (or one of its vertices): its square straddling the tangent
      * plane (even bundles: beside the point, tilted across the plane) or lying on one side of it (odd
      * bundles: over it, a quarter of them under it). Every ray's gathered transmittance, after the
      * gather as the renderer sets it, equals the scan's transmittance, exactly, with the cut-off and
@@ -2345,16 +2345,18 @@ class BoundingVolumeHierarchyTest {
      * @param mesh   the mesh to start on
      * @param bvh    the hierarchy of the scene
      * @param scan   the scan of the scene
-     * @param bundle the bundle's number
-     * @param counts the counters to add to
-     * @param tc     the test-case label
+     * @param bundle   the bundle's number
+     * @param atVertex whether the point is a vertex of the triangle, shared with its neighbours
+     * @param counts   the counters to add to
+     * @param tc       the test-case label
      */
     private static void checkLeaving(Random rnd, TriangleMesh mesh, BoundingVolumeHierarchy bvh,
-                                     BoundingVolumeHierarchy scan, int bundle, StartCounts counts, String tc) {
+                                     BoundingVolumeHierarchy scan, int bundle, boolean atVertex, StartCounts counts,
+                                     String tc) {
         Query query = bvh.newQuery();
         Query scanQuery = scan.newQuery();
         int t = rnd.nextInt(mesh.getTrianglesCount());
-        double u = rnd.nextDouble();
+        double u = atVertex ? 1 : rnd.nextDouble();
         Point3D p = pointOnTriangle(mesh, t, u, (1 - u) * rnd.nextDouble());
         Vector normal = mesh.getNormal(t);
         Vector n = normal.scale(Ray.DELTA / normal.length());
@@ -2462,7 +2464,7 @@ class BoundingVolumeHierarchyTest {
             BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(geometries);
             BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(geometries);
             for (int bundle = 0; bundle < 200; ++bundle)
-                checkLeaving(rnd, mesh, bvh, scan, bundle, counts, "TC01: scene " + scene);
+                checkLeaving(rnd, mesh, bvh, scan, bundle, false, counts, "TC01: scene " + scene);
         }
         // both kinds of bundles are common, some rays are darkened and some open, and gathered triangles
         // of straddling bundles are skipped often: the comparison is not vacuous
@@ -2515,6 +2517,20 @@ class BoundingVolumeHierarchyTest {
         }
         assertTrue(withoutBackFace >= 10, "TC02: without the back face too few bundles gathered the surface ("
                 + withoutBackFace + " of 100)");
+
+        // ===== Boundary Values Tests =====
+        // TC11: bundles leaving the meshes' vertices, each shared by several triangles whose planes pass
+        // through the point: every ray's answer is the scan's, exactly
+        StartCounts atVertices = new StartCounts();
+        for (TriangleMesh mesh : List.of(sphere, bumpyMesh())) {
+            Geometries geometries = new Geometries(mesh, new Sphere(new Point3D(1, 9, 3), 1.5));
+            BoundingVolumeHierarchy vertexBvh = BoundingVolumeHierarchy.build(geometries);
+            BoundingVolumeHierarchy vertexScan = BoundingVolumeHierarchy.scan(geometries);
+            for (int bundle = 0; bundle < 100; ++bundle)
+                checkLeaving(rnd, mesh, vertexBvh, vertexScan, bundle, true, atVertices, "TC11: " + mesh);
+        }
+        assertTrue(atVertices.straddling >= 50 && atVertices.oneSide >= 50, "TC11: too few straddling ("
+                + atVertices.straddling + ") or one-sided (" + atVertices.oneSide + ") bundles from vertices");
     }
 
     // ---------------------------------------------------------------- triangles left out behind both starts
