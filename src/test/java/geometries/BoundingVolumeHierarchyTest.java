@@ -2244,6 +2244,12 @@ class BoundingVolumeHierarchyTest {
         private int skipped;
         private int rays;
         private int darkened;
+
+        /** Asserts that both kinds of bundles were seen, at least a number of each. */
+        void assertBothKinds(int least, String tc) {
+            assertTrue(straddling >= least && oneSide >= least, tc + ": too few straddling (" + straddling
+                    + ") or one-sided (" + oneSide + ") bundles");
+        }
     }
 
     /**
@@ -2461,15 +2467,11 @@ class BoundingVolumeHierarchyTest {
                 geometries.add(new Sphere(new Point3D(1, -1, 3), 1.5));
             if (scene >= 2)
                 setKt(geometries, halves, rnd);
-            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(geometries);
-            BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(geometries);
-            for (int bundle = 0; bundle < 200; ++bundle)
-                checkLeaving(rnd, mesh, bvh, scan, bundle, false, counts, "TC01: scene " + scene);
+            checkLeaving(rnd, mesh, geometries, 200, false, counts, "TC01: scene " + scene);
         }
         // both kinds of bundles are common, some rays are darkened and some open, and gathered triangles
         // of straddling bundles are skipped often: the comparison is not vacuous
-        assertTrue(counts.straddling >= 300 && counts.oneSide >= 300, "TC01: too few straddling ("
-                + counts.straddling + ") or one-sided (" + counts.oneSide + ") bundles");
+        counts.assertBothKinds(300, "TC01");
         assertTrue(counts.darkened >= 3000 && counts.rays - counts.darkened >= 3000, "TC01: too few darkened ("
                 + counts.darkened + ") or open (" + (counts.rays - counts.darkened) + ") rays of " + counts.rays);
         assertTrue(counts.straddlingSkipping >= 200 && counts.skipped >= 20000, "TC01: too few straddling bundles "
@@ -2522,15 +2524,24 @@ class BoundingVolumeHierarchyTest {
         // TC11: bundles leaving the meshes' vertices, each shared by several triangles whose planes pass
         // through the point: every ray's answer is the scan's, exactly
         StartCounts atVertices = new StartCounts();
-        for (TriangleMesh mesh : List.of(sphere, bumpyMesh())) {
-            Geometries geometries = new Geometries(mesh, new Sphere(new Point3D(1, 9, 3), 1.5));
-            BoundingVolumeHierarchy vertexBvh = BoundingVolumeHierarchy.build(geometries);
-            BoundingVolumeHierarchy vertexScan = BoundingVolumeHierarchy.scan(geometries);
-            for (int bundle = 0; bundle < 100; ++bundle)
-                checkLeaving(rnd, mesh, vertexBvh, vertexScan, bundle, true, atVertices, "TC11: " + mesh);
-        }
-        assertTrue(atVertices.straddling >= 50 && atVertices.oneSide >= 50, "TC11: too few straddling ("
-                + atVertices.straddling + ") or one-sided (" + atVertices.oneSide + ") bundles from vertices");
+        for (TriangleMesh mesh : List.of(sphere, bumpyMesh()))
+            checkLeaving(rnd, mesh, new Geometries(mesh, new Sphere(new Point3D(1, 9, 3), 1.5)), 100, true,
+                    atVertices, "TC11: " + mesh);
+        atVertices.assertBothKinds(50, "TC11");
+    }
+
+    /**
+     * {@link #checkLeaving} for bundles 0, 1, … of a scene, in its hierarchy and its scan.
+     *
+     * @param geometries the scene, the mesh in it
+     * @param bundles    how many bundles
+     */
+    private static void checkLeaving(Random rnd, TriangleMesh mesh, Geometries geometries, int bundles,
+                                     boolean atVertex, StartCounts counts, String tc) {
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(geometries);
+        BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(geometries);
+        for (int bundle = 0; bundle < bundles; ++bundle)
+            checkLeaving(rnd, mesh, bvh, scan, bundle, atVertex, counts, tc);
     }
 
     // ---------------------------------------------------------------- triangles left out behind both starts
