@@ -371,10 +371,9 @@ public final class ShadowFrustum {
      * edges' heights f and g (all times |n|), its vertices grown by the barycentric tolerance.
      */
     private int startsBehind(double h, double f, double g) {
-        double tau = Triangle.BARYCENTRIC_TOLERANCE;
-        double h1 = h - tau * (f + g);
-        double h2 = h + f + tau * (2 * f - g);
-        double h3 = h + g + tau * (2 * g - f);
+        double h1 = grown(h, h + f, h + g);
+        double h2 = grown(h + f, h, h + g);
+        double h3 = grown(h + g, h, h + f);
         double square = offsetX * offsetX + offsetY * offsetY + offsetZ * offsetZ;
         double slack = rounding * Math.sqrt(square);
         int behind = Math.max(h1, Math.max(h2, h3)) < square - slack ? ABOVE : 0;
@@ -435,16 +434,19 @@ public final class ShadowFrustum {
      * barycentric tolerance: each vertex p moved by τ·((p − q) + (p − r)), q and r the other two),
      * may meet the pyramid. It is set aside when its three grown vertices lie outside one face of the
      * pyramid (a side, the base, or the back face when set) by more than the thickness and margin: the
-     * triangle, their convex hull, then lies outside it too.
+     * triangle, their convex hull, then lies outside it too. When the rays' starts are set, a triangle
+     * behind both is set aside as well ({@link #behindStarts}): only a ray from neither may meet it.
      *
      * @param vertices the coordinates of the vertices, three doubles each
      * @param p1       where the first vertex's x lies in vertices
      * @param p2       where the second vertex's x lies
      * @param p3       where the third vertex's x lies
-     * @return false only when no ray of the bundle can meet the triangle (never after a refused
-     *         {@link #set})
+     * @return false only when no ray of the bundle from its apex or its starts can meet the triangle
+     *         (never after a refused {@link #set}, unless starts were set since)
      */
     public boolean meetsTriangle(double[] vertices, int p1, int p2, int p3) {
+        if (behindStarts(vertices, p1, p2, p3))
+            return false;
         if (!valid)
             return true;
         double[] pl = planes;
@@ -467,10 +469,21 @@ public final class ShadowFrustum {
         double d1 = nx * vertices[p1] + ny * vertices[p1 + 1] + nz * vertices[p1 + 2] - offset;
         double d2 = nx * vertices[p2] + ny * vertices[p2 + 1] + nz * vertices[p2 + 2] - offset;
         double d3 = nx * vertices[p3] + ny * vertices[p3 + 1] + nz * vertices[p3 + 2] - offset;
-        double tau = Triangle.BARYCENTRIC_TOLERANCE;
         double m = margin;
-        return d1 + tau * ((d1 - d2) + (d1 - d3)) > m && d2 + tau * ((d2 - d1) + (d2 - d3)) > m
-                && d3 + tau * ((d3 - d1) + (d3 - d2)) > m;
+        return grown(d1, d2, d3) > m && grown(d2, d1, d3) > m && grown(d3, d1, d2) > m;
+    }
+
+    /**
+     * The distance of a triangle's vertex from a plane once the triangle is grown by {@link Triangle}'s
+     * barycentric tolerance τ (the vertex p moved by τ·((p − q) + (p − r))): the distance is affine.
+     *
+     * @param d     the vertex's distance
+     * @param other the distance of another vertex
+     * @param third the distance of the third
+     * @return the grown vertex's distance
+     */
+    private static double grown(double d, double other, double third) {
+        return d + Triangle.BARYCENTRIC_TOLERANCE * ((d - other) + (d - third));
     }
 
     /**

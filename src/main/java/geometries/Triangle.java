@@ -119,13 +119,12 @@ public class Triangle extends Polygon {
     }
 
     /**
-     * A triangle can meet a bundle only when its plane does and it is not outside a face of the
-     * bundle's pyramid ({@link ShadowFrustum#meetsTriangle}).
+     * A triangle can meet a bundle only when it is not outside a face of the bundle's pyramid nor
+     * behind the rays' starts ({@link ShadowFrustum#meetsTriangle}) and its plane meets the pyramid.
      */
     @Override
     boolean mayMeet(ShadowFrustum frustum) {
-        return !frustum.behindStarts(vertexCoordinates, 0, 3, 6) && super.mayMeet(frustum)
-                && frustum.meetsTriangle(vertexCoordinates, 0, 3, 6);
+        return frustum.meetsTriangle(vertexCoordinates, 0, 3, 6) && super.mayMeet(frustum);
     }
 
     /**

@@ -405,11 +405,10 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
-     * Whether triangle t may meet any ray of a shadow bundle: only when it lies behind neither of the
-     * rays' starts ({@link ShadowFrustum#behindStarts}), is not outside a face of the pyramid
-     * ({@link ShadowFrustum#meetsTriangle}, tested first: the cheaper test, and the one that sets
-     * aside the surface around the apex) and its plane meets it (as {@link Polygon}'s test). Reads the
-     * mesh's arrays, allocates nothing.
+     * Whether triangle t may meet any ray of a shadow bundle: only when the triangle itself may
+     * ({@link ShadowFrustum#meetsTriangle}, tested first: the cheaper test, and the one that sets aside
+     * the surface around the apex and behind the rays' starts) and its plane meets the pyramid (as
+     * {@link Polygon}'s test). Reads the mesh's arrays, allocates nothing.
      *
      * @param t       the triangle's index
      * @param frustum the pyramid the bundle sweeps
@@ -419,7 +418,7 @@ public final class TriangleMesh extends Geometry {
         int a = corner(t, 0);
         int b = corner(t, 1);
         int c = corner(t, 2);
-        if (frustum.behindStarts(vertices, a, b, c) || !frustum.meetsTriangle(vertices, a, b, c))
+        if (!frustum.meetsTriangle(vertices, a, b, c))
             return false;
         double ux = vertices[b] - vertices[a];
         double uy = vertices[b + 1] - vertices[a + 1];
