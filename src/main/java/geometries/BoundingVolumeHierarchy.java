@@ -64,6 +64,8 @@ public final class BoundingVolumeHierarchy {
      */
     private static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_DATA + 1;
 
+    /** The most closed meshes whose inner balls {@link #blocksBundle} tries: those of the largest balls. */
+    private static final int MAX_SOLIDS = 16;
     /** The name of the threads that share the build's work. */
     private static final String BUILD_THREADS = "hierarchy-build";
     /** The bodies of one chunk of the work shared out among threads during the build. */
@@ -109,6 +111,10 @@ public final class BoundingVolumeHierarchy {
     private final int[] nodeLinks;
     private final int nodesCount;
     private final int depth;
+    /** The tree's closed meshes that have an inner ball, the largest balls first, their balls and their boxes. */
+    private final TriangleMesh[] solids;
+    private final InnerBall[] solidBalls;
+    private final double[] solidBoxes;
 
     /**
      * Per-thread scratch space of queries: the traversal stack, the running result and a packet of
@@ -166,6 +172,9 @@ public final class BoundingVolumeHierarchy {
         private double[] maxTs = ox;
         private double[] ktrs = ox;
         private int packetSize;
+        /** The solids ({@link #solids}) {@link #blocksBundle} found across some of the bundle's rays, and how many. */
+        private final int[] solidList = new int[MAX_SOLIDS];
+        private int solidCount;
 
         private Query(int stackSize, int unboundedLength) {
             this.stack = new int[stackSize];
@@ -284,6 +293,27 @@ public final class BoundingVolumeHierarchy {
         this.wholeBounds = wholeBounds(builder.boxes);
         this.triangleBounds = new float[6 * bodyPart.length];
         runInChunks(bodyPart.length, threads, (from, to) -> placeTriangles(builder.boxes, from, to));
+        this.solids = tree ? solidsOf(owners, threads) : new TriangleMesh[0];
+        this.solidBalls = new InnerBall[solids.length];
+        this.solidBoxes = new double[6 * solids.length];
+        for (int s = 0; s < solids.length; ++s) {
+            solidBalls[s] = solids[s].innerBall();
+            solids[s].bounds(solidBoxes, 6 * s);
+        }
+    }
+
+    /**
+     * The closed meshes among the bodies of the tree that have an inner ball, at most
+     * {@value #MAX_SOLIDS} of them: those of the largest balls, in that order. The meshes look for
+     * their balls (once each, see {@link TriangleMesh#innerBall}) on the build's threads.
+     */
+    private static TriangleMesh[] solidsOf(Geometry[] owners, int threads) {
+        TriangleMesh[] meshes = Arrays.stream(owners).filter(TriangleMesh.class::isInstance)
+                .map(TriangleMesh.class::cast).toArray(TriangleMesh[]::new);
+        Parallel.forEach(meshes.length, threads, BUILD_THREADS, m -> meshes[m].innerBall());
+        return Arrays.stream(meshes).filter(mesh -> mesh.innerBall() != null)
+                .sorted(Comparator.comparingDouble((TriangleMesh mesh) -> mesh.innerBall().radius).reversed())
+                .limit(MAX_SOLIDS).toArray(TriangleMesh[]::new);
     }
 
     /**
@@ -511,12 +541,62 @@ public final class BoundingVolumeHierarchy {
             if (!culling || body.mayMeet(frustum))
                 query.gatheredUnbounded[found++] = body;
         query.unboundedCount = found;
+        query.solidCount = 0;
         query.gatheredCount = 0;
         query.startCounts[ShadowFrustum.ABOVE] = 0;
         query.startCounts[ShadowFrustum.BELOW] = 0;
         if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0))
             gatherTree(query);
         return found > 0 || query.gatheredCount != 0 || others.length > 0 || frustum.leftBehindStarts();
+    }
+
+    /**
+     * Whether a closed opaque mesh blocks every ray of the bundle of the last {@link #gather}: every
+     * ray passes through the mesh's inner ball on its way to a base outside the mesh's box
+     * ({@link ShadowFrustum#crossesSolid}), so each crosses the mesh's surface, and each ray's
+     * transparency is 0, as {@link #gatheredTransmittance} would find one ray at a time. A point in a
+     * body's umbra needs no ray traced. Otherwise the closed opaque meshes whose balls the pyramid
+     * meets, its base outside their boxes, are kept: {@link #gatheredTransmittances} answers 0 at
+     * once for a ray of the packet that passes through one of those balls. A brute-force
+     * {@link #scan} has no such meshes.
+     *
+     * @param query this thread's scratch space, as the last {@link #gather} left it
+     * @return true when every ray of the bundle is blocked
+     */
+    public boolean blocksBundle(Query query) {
+        ShadowFrustum frustum = query.frustum;
+        int count = 0;
+        for (int s = 0; s < solids.length; ++s) {
+            InnerBall ball = solidBalls[s];
+            if (solids[s].getMaterial().getKt() == 0 && frustum.meetsBox(ball.box(), 0)
+                    && frustum.baseOutside(solidBoxes, 6 * s)) {
+                if (frustum.sectionInside(ball))
+                    return true;
+                query.solidList[count++] = s;
+            }
+        }
+        query.solidCount = count;
+        return false;
+    }
+
+    /**
+     * Answers 0 for each unblocked ray of the packet that passes through the ball of a solid
+     * {@link #blocksBundle} kept: it crosses that closed opaque mesh.
+     *
+     * @return the number of rays so blocked
+     */
+    private int blockBySolids(Query query) {
+        int blocked = 0;
+        for (int k = 0; k < query.solidCount; ++k) {
+            InnerBall ball = solidBalls[query.solidList[k]];
+            for (int r = 0; r < query.packetSize; ++r)
+                if (query.ktrs[r] > 0 && ball.crossedBy(query.ox[r], query.oy[r], query.oz[r], query.dx[r],
+                        query.dy[r], query.dz[r], query.maxTs[r])) {
+                    query.ktrs[r] = 0;
+                    ++blocked;
+                }
+        }
+        return blocked;
     }
 
     /**
@@ -725,6 +805,7 @@ public final class BoundingVolumeHierarchy {
             if (query.ktrs[r] > 0)
                 ++active;
         }
+        active -= blockBySolids(query);
         if (active > 0)
             walkPacket(query, active, minK);
         for (int r = 0; r < n; ++r)

@@ -64,6 +64,48 @@ public class Triangle extends Polygon {
         return intersect(data, 0, ox, oy, oz, dx, dy, dz, maxT);
     }
 
+    /** The number of doubles {@link #project} writes. */
+    static final int PROJECTION = 6;
+
+    /**
+     * Projects a point onto a triangle's plane: the barycentric coordinates u (along e1) and v (along
+     * e2) of its foot, the point's signed distance from the plane and the plane's unit normal, in
+     * that order.
+     *
+     * @param data   a triangle's data (p1, e1 = p2 − p1, e2 = p3 − p1, ...), as {@link #intersect} takes them
+     * @param x      the point, x
+     * @param y      the point, y
+     * @param z      the point, z
+     * @param target where the {@value #PROJECTION} numbers go
+     */
+    static void project(double[] data, double x, double y, double z, double[] target) {
+        double e1x = data[3];
+        double e1y = data[4];
+        double e1z = data[5];
+        double e2x = data[6];
+        double e2y = data[7];
+        double e2z = data[8];
+        double wx = x - data[0];
+        double wy = y - data[1];
+        double wz = z - data[2];
+        double d11 = e1x * e1x + e1y * e1y + e1z * e1z;
+        double d12 = e1x * e2x + e1y * e2y + e1z * e2z;
+        double d22 = e2x * e2x + e2y * e2y + e2z * e2z;
+        double w1 = wx * e1x + wy * e1y + wz * e1z;
+        double w2 = wx * e2x + wy * e2y + wz * e2z;
+        double denominator = d11 * d22 - d12 * d12;
+        double nx = e1y * e2z - e1z * e2y;
+        double ny = e1z * e2x - e1x * e2z;
+        double nz = e1x * e2y - e1y * e2x;
+        double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        target[0] = (d22 * w1 - d12 * w2) / denominator;
+        target[1] = (d11 * w2 - d12 * w1) / denominator;
+        target[2] = (wx * nx + wy * ny + wz * nz) / length;
+        target[3] = nx / length;
+        target[4] = ny / length;
+        target[5] = nz / length;
+    }
+
     /**
      * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle whose data
      * (p1, e1, e2 and the parallel limit, see the constructor) lie in an array.

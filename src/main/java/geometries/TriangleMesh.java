@@ -40,6 +40,9 @@ public final class TriangleMesh extends Geometry {
     /** The box around every point the renderer's test of a triangle accepts. */
     private final double[] box = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+    /** The ball inside the mesh when it is closed, or null; looked for once, on the first {@link #innerBall}. */
+    private InnerBall innerBall;
+    private boolean innerBallSought;
 
     /**
      * A hit on a mesh: the point, the mesh and the triangle of the mesh the point lies on.
@@ -272,32 +275,18 @@ public final class TriangleMesh extends Geometry {
      * @return the distance, or +∞ when the point is off the triangle
      */
     private double distanceOnTriangle(int t, Point3D point) {
-        int a = corner(t, 0);
-        int b = corner(t, 1);
-        int c = corner(t, 2);
-        double e1x = vertices[b] - vertices[a];
-        double e1y = vertices[b + 1] - vertices[a + 1];
-        double e1z = vertices[b + 2] - vertices[a + 2];
-        double e2x = vertices[c] - vertices[a];
-        double e2y = vertices[c + 1] - vertices[a + 1];
-        double e2z = vertices[c + 2] - vertices[a + 2];
-        double wx = point.getX() - vertices[a];
-        double wy = point.getY() - vertices[a + 1];
-        double wz = point.getZ() - vertices[a + 2];
-        double nx = e1y * e2z - e1z * e2y;
-        double ny = e1z * e2x - e1x * e2z;
-        double nz = e1x * e2y - e1y * e2x;
-        double distance = Math.abs(wx * nx + wy * ny + wz * nz) / Math.sqrt(nx * nx + ny * ny + nz * nz);
-        double d11 = e1x * e1x + e1y * e1y + e1z * e1z;
-        double d12 = e1x * e2x + e1y * e2y + e1z * e2z;
-        double d22 = e2x * e2x + e2y * e2y + e2z * e2z;
-        double w1 = wx * e1x + wy * e1y + wz * e1z;
-        double w2 = wx * e2x + wy * e2y + wz * e2z;
-        double denominator = d11 * d22 - d12 * d12;
-        double u = (d22 * w1 - d12 * w2) / denominator;
-        double v = (d11 * w2 - d12 * w1) / denominator;
-        double longest = Math.sqrt(Math.max(Math.max(d11, d22),
-                (e2x - e1x) * (e2x - e1x) + (e2y - e1y) * (e2y - e1y) + (e2z - e1z) * (e2z - e1z)));
+        double[] data = new double[TRIANGLE_DATA];
+        double[] foot = new double[Triangle.PROJECTION];
+        triangleData(t, data, 0);
+        Triangle.project(data, point.getX(), point.getY(), point.getZ(), foot);
+        double u = foot[0];
+        double v = foot[1];
+        double distance = Math.abs(foot[2]);
+        double d11 = data[3] * data[3] + data[4] * data[4] + data[5] * data[5];
+        double d22 = data[6] * data[6] + data[7] * data[7] + data[8] * data[8];
+        double d33 = (data[6] - data[3]) * (data[6] - data[3]) + (data[7] - data[4]) * (data[7] - data[4])
+                + (data[8] - data[5]) * (data[8] - data[5]);
+        double longest = Math.sqrt(Math.max(Math.max(d11, d22), d33));
         boolean inside = u >= -ON_TRIANGLE_TOLERANCE && v >= -ON_TRIANGLE_TOLERANCE
                 && u + v <= 1 + ON_TRIANGLE_TOLERANCE;
         return inside && distance <= ON_TRIANGLE_TOLERANCE * longest ? distance : Double.POSITIVE_INFINITY;
@@ -465,6 +454,20 @@ public final class TriangleMesh extends Geometry {
     boolean bounds(double[] target, int b) {
         System.arraycopy(box, 0, target, b, 6);
         return true;
+    }
+
+    /**
+     * The ball inside the mesh, when it is closed ({@link InnerBall}): looked for on the first call,
+     * which takes a few passes over the triangles, and kept.
+     *
+     * @return the ball, or null when the mesh is open or no ball was found
+     */
+    synchronized InnerBall innerBall() {
+        if (!innerBallSought) {
+            innerBall = InnerBall.of(this);
+            innerBallSought = true;
+        }
+        return innerBall;
     }
 
     /**

@@ -197,6 +197,17 @@ public abstract class RayTracerBase {
     }
 
     /**
+     * The shadow rays of soft shadows whose whole bundle was found blocked: every ray passes through
+     * the inside of a closed opaque mesh, so none was tested. They are counted in
+     * {@link #getShadowRaysCount()} too.
+     *
+     * @return the number of such rays traced by this ray tracer so far
+     */
+    public long getBlockedShadowRaysCount() {
+        return sum(state -> state.blockedShadowRays);
+    }
+
+    /**
      * The reflected and refracted rays spread by glossy and blurry surfaces (the sharp rays of
      * mirrors and clear glass are not counted).
      *

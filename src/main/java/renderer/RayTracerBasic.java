@@ -315,7 +315,7 @@ public class RayTracerBasic extends RayTracerBase {
         square.setSquare(light);
         JitteredGrid grid = getBeamGrid();
         double[] samples = state.points(grid);
-        if (square.isOpen()) // the points are not needed, but the numbers drawn after them must stay the same
+        if (square.isSettled()) // the points are not needed, but the numbers drawn after them must stay the same
             state.random.skip(2L * grid.getSamplesCount());
         else
             grid.sampleUnchecked(state.random, samples);
@@ -330,6 +330,8 @@ public class RayTracerBasic extends RayTracerBase {
         state.shadowRays += rays;
         if (square.isOpen())
             state.openShadowRays += rays;
+        if (square.isBlocked())
+            state.blockedShadowRays += rays;
         return ktr / rays;
     }
 
@@ -352,6 +354,8 @@ public class RayTracerBasic extends RayTracerBase {
         private enum Bundle {
             /** Nothing can block any of them: each lets all the light through, untested. */
             OPEN,
+            /** A closed opaque mesh lies across every one of them: each is blocked, untested. */
+            BLOCKED,
             /** Each is tested against the few bodies gathered for the bundle. */
             GATHERED,
             /** The bundle kept a subtree: its rays walk it together, as a packet. */
@@ -510,12 +514,29 @@ public class RayTracerBasic extends RayTracerBase {
                 frustum.setLeaving((int) side, px, py, pz, nx, ny, nz);
             if (!bvh.gather(query))
                 return Bundle.OPEN;
+            if (bvh.blocksBundle(query))
+                return Bundle.BLOCKED;
             return query.isSubtreeGathered() ? Bundle.PACKET : Bundle.GATHERED;
         }
 
         /** {@return true when no ray of the bundle can be blocked: each lets all the light through} */
         boolean isOpen() {
             return bundle == Bundle.OPEN;
+        }
+
+        /** {@return true when every ray of the bundle is blocked by a closed opaque mesh} */
+        boolean isBlocked() {
+            return bundle == Bundle.BLOCKED;
+        }
+
+        /** {@return true when the bundle's rays need no tracing: it is open, or blocked} */
+        boolean isSettled() {
+            return isOpen() || isBlocked();
+        }
+
+        /** {@return the summed transparency of some rays of a settled bundle: 1 each when open, else 0} */
+        private double settled(int rays) {
+            return isOpen() ? rays : 0;
         }
 
         /**
@@ -525,8 +546,8 @@ public class RayTracerBasic extends RayTracerBase {
          * @return the transparency in [0, 1]
          */
         double visibility(double distance) {
-            if (isOpen())
-                return 1;
+            if (isSettled())
+                return settled(1);
             return transmittance(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
         }
 
@@ -549,8 +570,8 @@ public class RayTracerBasic extends RayTracerBase {
          * @return the centre's transparency plus the sum of the others'
          */
         double visibility(double distance, double[] samples, int to) {
-            if (isOpen())
-                return 1 + to;
+            if (isSettled())
+                return settled(1 + to);
             if (bundle != Bundle.PACKET)
                 return visibility(distance) + traceSamples(samples, 0, to);
             query.clearPacket();
@@ -570,8 +591,8 @@ public class RayTracerBasic extends RayTracerBase {
          * @return the sum of the rays' transparencies
          */
         double visibility(double[] samples, int from, int to) {
-            if (isOpen())
-                return to - from;
+            if (isSettled())
+                return settled(to - from);
             if (bundle != Bundle.PACKET)
                 return traceSamples(samples, from, to);
             query.clearPacket();

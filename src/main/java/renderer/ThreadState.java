@@ -19,6 +19,8 @@ final class ThreadState {
     long shadowRays;
     /** The shadow rays of this thread whose bundle nothing could block. */
     long openShadowRays;
+    /** The shadow rays of this thread whose bundle a closed opaque mesh blocked whole. */
+    long blockedShadowRays;
     /** The reflected and refracted rays spread by glossy and blurry surfaces on this thread. */
     long spreadRays;
     /** Whether this thread is tracing the rays of a glossy or blurry beam (which spread no beam of their own). */

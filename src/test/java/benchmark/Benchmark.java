@@ -37,7 +37,8 @@ import scene.Scene;
  * {@link java.lang.management.MemoryMXBean}) once the scene and a hierarchy are built, less the heap
  * in use before, divided by the bodies (for the meshes, bytes per triangle);</li>
  * <li>the primary and shadow rays of a frame (and the share of the shadow rays whose bundle was
- * open: nothing could block them, so no body was tested), the seconds of the first frame (which
+ * open: nothing could block them, so no body was tested; and of those whose bundle was blocked
+ * whole by a closed opaque mesh, so no ray was tested), the seconds of the first frame (which
  * builds the render's hierarchy), the median seconds of the timed frames (warm: the hierarchy is
  * built once, not per frame), million shadow rays per second, and million rays (primary, shadow and
  * spread) per second;</li>
@@ -177,27 +178,30 @@ public final class Benchmark {
         long primary = 0;
         long shadow = 0;
         long open = 0;
+        long blocked = 0;
         long spread = 0;
         for (int f = 0; f < frames; ++f) {
             long primaryBefore = rayTracer.getPrimaryRaysCount();
             long shadowBefore = rayTracer.getShadowRaysCount();
             long openBefore = rayTracer.getOpenShadowRaysCount();
+            long blockedBefore = rayTracer.getBlockedShadowRaysCount();
             long spreadBefore = rayTracer.getSpreadRaysCount();
             seconds[f] = timedRender(render);
             primary = rayTracer.getPrimaryRaysCount() - primaryBefore;
             shadow = rayTracer.getShadowRaysCount() - shadowBefore;
             open = rayTracer.getOpenShadowRaysCount() - openBefore;
+            blocked = rayTracer.getBlockedShadowRaysCount() - blockedBefore;
             spread = rayTracer.getSpreadRaysCount() - spreadBefore;
         }
         render.writeToImage();
         if (warmup == 0)
             first = seconds[0];
         double median = median(seconds);
-        System.out.printf("%s: %d pixels, %d primary rays/frame, %d shadow rays/frame (%.1f %% in open bundles),"
-                        + " first frame %.3f s (with the build), median %.3f s/frame (frames %s s),"
+        System.out.printf("%s: %d pixels, %d primary rays/frame, %d shadow rays/frame (%.1f %% in open bundles,"
+                        + " %.1f %% in blocked ones), first frame %.3f s (with the build), median %.3f s/frame (frames %s s),"
                         + " %.2f M shadow rays/s, %.2f M rays/s%n",
-                name, size * size, primary, shadow, 100.0 * open / shadow, first, median, format(seconds),
-                shadow / median / 1e6, (primary + shadow + spread) / median / 1e6);
+                name, size * size, primary, shadow, 100.0 * open / shadow, 100.0 * blocked / shadow, first, median,
+                format(seconds), shadow / median / 1e6, (primary + shadow + spread) / median / 1e6);
         if (spread > 0)
             System.out.printf("%s: %d spread rays/frame%n", name, spread);
     }
