@@ -1,6 +1,9 @@
 package geometries;
 
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
 
 /**
  * A ball inside a closed triangle mesh, which touches none of its triangles. Every edge of a closed
@@ -89,13 +92,18 @@ final class InnerBall {
         if (!isClosed(mesh))
             return null;
         double[] data = new double[TriangleMesh.TRIANGLE_DATA];
-        InnerBall best = null;
+        List<InnerBall> balls = new ArrayList<>();
         for (double[] centre : centres(mesh, data)) {
             InnerBall ball = around(mesh, data, centre);
-            if (ball != null && (best == null || ball.radius > best.radius))
-                best = ball;
+            if (ball != null)
+                balls.add(ball);
         }
-        return best;
+        // the larger ball first: the other's centre is tried only when this one's is not surely inside
+        balls.sort(Comparator.comparingDouble((InnerBall ball) -> ball.radius).reversed());
+        for (InnerBall ball : balls)
+            if (inside(mesh, data, ball))
+                return ball;
+        return null;
     }
 
     /**
@@ -107,17 +115,15 @@ final class InnerBall {
      * @return true when every edge is used an even number of times
      */
     static boolean isClosed(TriangleMesh mesh) {
-        int triangles = mesh.getTrianglesCount();
+        int[] indices = mesh.indices();
         long mixed = 0;
-        for (int t = 0; t < triangles; ++t)
-            for (int k = 0; k < 3; ++k)
-                mixed ^= mix(edgeKey(mesh, t, k));
+        for (int i = 0; i < indices.length; ++i)
+            mixed ^= mix(edgeKey(indices, i));
         if (mixed != 0)
             return false;
-        long[] edges = new long[3 * triangles];
-        for (int t = 0; t < triangles; ++t)
-            for (int k = 0; k < 3; ++k)
-                edges[3 * t + k] = edgeKey(mesh, t, k);
+        long[] edges = new long[indices.length];
+        for (int i = 0; i < indices.length; ++i)
+            edges[i] = edgeKey(indices, i);
         Arrays.sort(edges);
         for (int i = 0; i < edges.length; i += 2)
             if (edges[i] != edges[i + 1])
@@ -125,10 +131,16 @@ final class InnerBall {
         return true;
     }
 
-    /** {@return the key of edge k of triangle t, from its vertex k to the next: the same either way round} */
-    private static long edgeKey(TriangleMesh mesh, int t, int k) {
-        int a = mesh.getVertexIndex(t, k);
-        int b = mesh.getVertexIndex(t, (k + 1) % 3);
+    /**
+     * The key of an edge, the same either way round.
+     *
+     * @param indices the triangles' vertex indices, three per triangle
+     * @param i       a corner: the edge goes from it to the next corner of its triangle
+     * @return the key
+     */
+    private static long edgeKey(int[] indices, int i) {
+        int a = indices[i];
+        int b = indices[i % 3 == 2 ? i - 2 : i + 1];
         return (long) Math.min(a, b) << 32 | Math.max(a, b);
     }
 
@@ -168,18 +180,30 @@ final class InnerBall {
     }
 
     /**
-     * The ball around a centre, its radius the distance to the nearest triangle less a relative margin
-     * and an absolute one for the rounding of coordinates as large as the mesh's.
+     * Whether a ball's centre lies surely inside a closed mesh: each parity ray from it is sure and
+     * crosses the mesh an odd number of times.
      *
      * @param data scratch space for a triangle's data
-     * @return the ball, or null when the centre is not surely inside the mesh
      */
-    private static InnerBall around(TriangleMesh mesh, double[] data, double[] centre) {
+    private static boolean inside(TriangleMesh mesh, double[] data, InnerBall ball) {
+        double[] centre = { ball.cx, ball.cy, ball.cz };
         for (double[] d : PARITY_DIRECTIONS) {
             int crossings = crossings(mesh, data, centre, d);
             if (crossings == UNSURE || crossings % 2 == 0)
-                return null;
+                return false;
         }
+        return true;
+    }
+
+    /**
+     * The ball around a centre that touches no triangle, its radius the distance to the nearest
+     * triangle less a relative margin and an absolute one for the rounding of coordinates as large as
+     * the mesh's; whether it lies inside the mesh is not asked.
+     *
+     * @param data scratch space for a triangle's data
+     * @return the ball, or null when the centre is (nearly) on a triangle
+     */
+    private static InnerBall around(TriangleMesh mesh, double[] data, double[] centre) {
         double nearest = Double.POSITIVE_INFINITY;
         double[] box = new double[6];
         mesh.bounds(box, 0);

@@ -445,6 +445,11 @@ public final class TriangleMesh extends Geometry {
         target[offset + 9] = parallelLimits[t];
     }
 
+    /** {@return the triangles' vertex indices, three per triangle: the mesh's own array, not to be changed} */
+    int[] indices() {
+        return indices;
+    }
+
     /** {@return where vertex k (0, 1 or 2) of triangle t lies in the vertices' array: the place of its x} */
     private int corner(int t, int k) {
         return 3 * indices[3 * t + k];
