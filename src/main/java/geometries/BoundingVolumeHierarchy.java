@@ -64,7 +64,7 @@ public final class BoundingVolumeHierarchy {
      */
     private static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_DATA + 1;
 
-    /** The most closed meshes whose inner balls {@link #blocksBundle} tries: those of the largest balls. */
+    /** The most closed meshes whose inner balls {@link #gather} tries: those of the largest balls. */
     private static final int MAX_SOLIDS = 16;
     /** The name of the threads that share the build's work. */
     private static final String BUILD_THREADS = "hierarchy-build";
@@ -172,9 +172,12 @@ public final class BoundingVolumeHierarchy {
         private double[] maxTs = ox;
         private double[] ktrs = ox;
         private int packetSize;
-        /** The solids ({@link #solids}) {@link #blocksBundle} found across some of the bundle's rays, and how many. */
+        /** The solids ({@link #solids}) {@link #gather} found across some of the bundle's rays, and how many. */
         private final int[] solidList = new int[MAX_SOLIDS];
         private int solidCount;
+        /** Whether the last {@link #gather} tried the solids, and found one that blocks every ray of the bundle. */
+        private boolean solidsTried;
+        private boolean blocked;
 
         private Query(int stackSize, int unboundedLength) {
             this.stack = new int[stackSize];
@@ -529,6 +532,11 @@ public final class BoundingVolumeHierarchy {
      * bounded ones must meet it. When more than a few of the tree's
      * bodies meet it, their smallest subtree is kept instead. A brute-force {@link #scan} gathers
      * every body.
+     * <p>
+     * Once the first body is gathered, the tree's closed opaque meshes are tried: when one lies across
+     * every ray of the bundle, the gather stops, and the bundle is blocked ({@link #blocksBundle});
+     * otherwise those whose inner balls the pyramid meets are kept, and a ray of the packet through
+     * one of those balls is answered at once ({@link #gatheredTransmittances}).
      *
      * @param query this thread's scratch space, its frustum set to the bundle's pyramid
      * @return false when no ray of the bundle can meet anything: then no ray needs to be tested (never
@@ -542,36 +550,51 @@ public final class BoundingVolumeHierarchy {
                 query.gatheredUnbounded[found++] = body;
         query.unboundedCount = found;
         query.solidCount = 0;
+        query.solidsTried = false;
+        query.blocked = false;
         query.gatheredCount = 0;
         query.startCounts[ShadowFrustum.ABOVE] = 0;
         query.startCounts[ShadowFrustum.BELOW] = 0;
         if (nodesCount > 0 && frustum.meetsBox(nodeBounds, 0))
             gatherTree(query);
-        return found > 0 || query.gatheredCount != 0 || others.length > 0 || frustum.leftBehindStarts();
+        return found > 0 || query.gatheredCount != 0 || others.length > 0 || frustum.leftBehindStarts()
+                || query.blocked;
     }
 
     /**
-     * Whether a closed opaque mesh blocks every ray of the bundle of the last {@link #gather}: every
-     * ray passes through the mesh's inner ball on its way to a base outside the mesh's box
+     * Whether the last {@link #gather} found a closed opaque mesh that blocks every ray of its bundle:
+     * every ray passes through the mesh's inner ball on its way to a base outside the mesh's box
      * ({@link ShadowFrustum#crossesSolid}), so each crosses the mesh's surface, and each ray's
-     * transparency is 0, as {@link #gatheredTransmittance} would find one ray at a time. A point in a
-     * body's umbra needs no ray traced. Otherwise the closed opaque meshes whose balls the pyramid
-     * meets, its base outside their boxes, are kept: {@link #gatheredTransmittances} answers 0 at
-     * once for a ray of the packet that passes through one of those balls. A brute-force
-     * {@link #scan} has no such meshes.
+     * transparency is 0, as {@link #gatheredTransmittance} (which then answers 0) would find one ray
+     * at a time. A point in a body's umbra needs no ray traced. A brute-force {@link #scan} has no
+     * such meshes.
      *
      * @param query this thread's scratch space, as the last {@link #gather} left it
      * @return true when every ray of the bundle is blocked
      */
     public boolean blocksBundle(Query query) {
+        return query.blocked;
+    }
+
+    /**
+     * Tries the tree's closed opaque meshes on the query's bundle: keeps those whose inner balls the
+     * pyramid meets, its base outside their boxes, unless one lies across every ray (the bundle is
+     * then blocked).
+     *
+     * @return true when one lies across every ray of the bundle
+     */
+    private boolean triesSolids(Query query) {
+        query.solidsTried = true;
         ShadowFrustum frustum = query.frustum;
         int count = 0;
         for (int s = 0; s < solids.length; ++s) {
             InnerBall ball = solidBalls[s];
             if (solids[s].getMaterial().getKt() == 0 && frustum.meetsBox(ball.box(), 0)
                     && frustum.baseOutside(solidBoxes, 6 * s)) {
-                if (frustum.sectionInside(ball))
+                if (frustum.sectionInside(ball)) {
+                    query.blocked = true;
                     return true;
+                }
                 query.solidList[count++] = s;
             }
         }
@@ -581,7 +604,7 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Answers 0 for each unblocked ray of the packet that passes through the ball of a solid
-     * {@link #blocksBundle} kept: it crosses that closed opaque mesh.
+     * {@link #gather} kept: it crosses that closed opaque mesh.
      *
      * @return the number of rays so blocked
      */
@@ -627,8 +650,10 @@ public final class BoundingVolumeHierarchy {
                     continue;
                 }
             } else if (!gatherLeaf(query, first, count)) {
-                query.gatheredCount = -1;
-                query.subtree = subtree;
+                if (!query.blocked) {
+                    query.gatheredCount = -1;
+                    query.subtree = subtree;
+                }
                 return;
             }
             if (top == 0)
@@ -639,11 +664,14 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Adds a leaf's bodies that may meet the frustum ({@link #bodyMeets}), a mesh's triangle with the
-     * numbers of its test; false when there is no room for them.
+     * numbers of its test; false when there is no room for them, or when the solids, tried at the
+     * first body found, block the bundle.
      */
     private boolean gatherLeaf(Query query, int first, int count) {
         for (int b = first; b < first + count; ++b)
             if (bodyMeets(query, b)) {
+                if (!query.solidsTried && triesSolids(query))
+                    return false;
                 int slot = query.gatheredCount;
                 if (slot == MAX_GATHERED)
                     return false;
@@ -728,6 +756,8 @@ public final class BoundingVolumeHierarchy {
      */
     public double gatheredTransmittance(double ox, double oy, double oz, double dx, double dy, double dz,
                                         double maxT, double minK, Query query) {
+        if (query.blocked)
+            return 0;
         return query.frustum.hasStarts() ? fromStart(ox, oy, oz, dx, dy, dz, maxT, minK, query)
                 : throughBundle(0, ox, oy, oz, dx, dy, dz, maxT, minK, query);
     }
@@ -793,6 +823,10 @@ public final class BoundingVolumeHierarchy {
      */
     public void gatheredTransmittances(double minK, Query query) {
         int n = query.packetSize;
+        if (query.blocked) {
+            Arrays.fill(query.ktrs, 0, n, 0);
+            return;
+        }
         if (query.gatheredCount >= 0) {
             for (int r = 0; r < n; ++r)
                 query.ktrs[r] = gatheredTransmittance(query.ox[r], query.oy[r], query.oz[r], query.dx[r], query.dy[r],
