@@ -954,6 +954,36 @@ class ShadowFrustumTest {
     }
 
     /**
+     * A random bundle: a random pyramid ({@link #randomPyramid}), thin or thick, set in a frustum, and
+     * segments its rays may cover ({@link #raySegment}).
+     *
+     * @param pyramid   the pyramid {apex, c, a, b}
+     * @param thickness its thickness
+     * @param segments  200 segments, {start, end} each
+     */
+    private record RandomBundle(double[] pyramid, double thickness, double[][] segments) {
+        /**
+         * Draws a bundle, a quarter of them (every fourth) thin, the others 1e-4 to 1 thick
+         * (log-uniform), and sets its pyramid in a frustum.
+         *
+         * @param rnd     the generator
+         * @param frustum the frustum to set
+         * @param f       the bundle's number
+         * @return the bundle, or null when the pyramid is flat (refused, no segment drawn)
+         */
+        static RandomBundle set(Random rnd, ShadowFrustum frustum, int f) {
+            double[] p = randomPyramid(rnd);
+            double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
+            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], thickness))
+                return null;
+            double[][] segments = new double[200][];
+            for (int i = 0; i < segments.length; ++i)
+                segments[i] = raySegment(rnd, p, thickness);
+            return new RandomBundle(p, thickness, segments);
+        }
+    }
+
+    /**
      * Whether a box holds a point.
      *
      * @param box   {minX, minY, minZ, maxX, maxY, maxZ}
@@ -1104,13 +1134,12 @@ class ShadowFrustumTest {
         int boxMet = 0;
         ShadowFrustum frustum = new ShadowFrustum();
         for (int f = 0; f < 300; ++f) {
-            double[] p = randomPyramid(rnd);
-            double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
-            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], thickness))
+            RandomBundle bundle = RandomBundle.set(rnd, frustum, f);
+            if (bundle == null)
                 continue;
-            double[][] segments = new double[200][];
-            for (int i = 0; i < segments.length; ++i)
-                segments[i] = raySegment(rnd, p, thickness);
+            double[] p = bundle.pyramid();
+            double thickness = bundle.thickness();
+            double[][] segments = bundle.segments();
             for (int t = 0; t < 40; ++t) {
                 double[] centre = segmentPoint(rnd, raySegment(rnd, p, thickness));
                 double size = Math.pow(10, -3 + 4.5 * rnd.nextDouble());
@@ -1277,13 +1306,12 @@ class ShadowFrustumTest {
         int missing = 0;
         ShadowFrustum frustum = new ShadowFrustum();
         for (int f = 0; f < 300; ++f) {
-            double[] p = randomPyramid(rnd);
-            double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
-            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], thickness))
+            RandomBundle bundle = RandomBundle.set(rnd, frustum, f);
+            if (bundle == null)
                 continue;
-            double[][] segments = new double[200][];
-            for (int i = 0; i < segments.length; ++i)
-                segments[i] = raySegment(rnd, p, thickness);
+            double[] p = bundle.pyramid();
+            double thickness = bundle.thickness();
+            double[][] segments = bundle.segments();
             double corner = Math.max(Math.sqrt(squared(p[6] + p[9], p[7] + p[10], p[8] + p[11])),
                     Math.sqrt(squared(p[6] - p[9], p[7] - p[10], p[8] - p[11])));
             for (int b = 0; b < 8; ++b) {
