@@ -3001,7 +3001,8 @@ class BoundingVolumeHierarchyTest {
          * @return the point
          */
         private static Point3D randomAbove(Random rnd, double low, double high) {
-            return new Point3D(16 * rnd.nextDouble() - 8, 16 * rnd.nextDouble() - 8, low + (high - low) * rnd.nextDouble());
+            return new Point3D(16 * rnd.nextDouble() - 8, 16 * rnd.nextDouble() - 8,
+                    low + (high - low) * rnd.nextDouble());
         }
     }
 

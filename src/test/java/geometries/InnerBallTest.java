@@ -385,8 +385,10 @@ class InnerBallTest {
     @Test
     void testOfRandomMeshes() {
         // ===== Equivalence Partitions Tests =====
-        // TC01: 40 random meshes × 200 segments from random points of the ball (a tenth on its surface,
-        // shrunk by 1e-9) to random points outside the box
+        // TC01: 40 random meshes × 180 segments from random points inside the ball to random points
+        // outside the box (just outside to the box's extent away)
+        // ===== Boundary Values Tests =====
+        // TC11: the same meshes × 20 segments from points of the ball's surface (shrunk by 1e-9)
         Random rnd = new Random(20261202);
         int found = 0;
         for (int m = 0; m < 40; ++m) {
@@ -402,20 +404,23 @@ class InnerBallTest {
             if (ball == null)
                 continue;
             ++found;
-            String label = "TC01: mesh " + m + " (ball at " + centre(ball) + ", radius " + ball.radius + ")";
-            assertTrue(nearestTriangle(mesh, centre(ball)) > ball.radius, label + ": the ball must touch no triangle");
+            String meshLabel = "mesh " + m + " (ball at " + centre(ball) + ", radius " + ball.radius + ")";
+            assertTrue(nearestTriangle(mesh, centre(ball)) > ball.radius, "TC01: " + meshLabel
+                    + ": the ball must touch no triangle");
             double[] box = new double[6];
             mesh.bounds(box, 0);
             double extent = Math.max(box[3] - box[0], Math.max(box[4] - box[1], box[5] - box[2]));
             for (int s = 0; s < 200; ++s) {
-                double reach = s % 10 == 0 ? 1 - 1e-9 : Math.cbrt(rnd.nextDouble());
+                boolean surface = s % 10 == 0;
+                double reach = surface ? 1 - 1e-9 : Math.cbrt(rnd.nextDouble());
                 Point3D from = centre(ball).add(randomUnit(rnd).scale(reach * ball.radius));
                 Point3D to = outside(rnd, box, extent);
                 Vector d = to.subtract(from);
                 double length = d.length();
                 d = d.normalize();
                 assertTrue(mesh.nearestHit(from.getX(), from.getY(), from.getZ(), d.getX(), d.getY(), d.getZ(), length)
-                        < Geometry.NO_HIT, label + ": the segment from " + from + " to " + to + " must hit the mesh");
+                        < Geometry.NO_HIT, () -> (surface ? "TC11: " : "TC01: ") + meshLabel + ": the segment from "
+                        + from + " to " + to + " must hit the mesh");
             }
         }
         assertTrue(found >= 30, "TC01: too few meshes with an inner ball: " + found);

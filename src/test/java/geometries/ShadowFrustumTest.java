@@ -1293,7 +1293,8 @@ class ShadowFrustumTest {
      * Test method for {@link ShadowFrustum#crossesSolid} on seeded random pyramids, thin and thick, and
      * balls about their axes: when it says a bundle crosses a ball, each of 200 segments the bundle's
      * rays may cover (from the apex to the base, each end moved by up to the thickness) passes through
-     * the ball's inside ({@link InnerBall#crossedBy}) and ends outside the box.
+     * the ball's inside ({@link InnerBall#crossedBy}) and ends outside the box, and so do the rays along
+     * the pyramid's edges moved by the whole thickness away from the ball.
      */
     @Test
     void testRandomSolids() {
@@ -1310,14 +1311,12 @@ class ShadowFrustumTest {
             if (bundle == null)
                 continue;
             double[] p = bundle.pyramid();
-            double thickness = bundle.thickness();
-            double[][] segments = bundle.segments();
             double corner = Math.max(Math.sqrt(squared(p[6] + p[9], p[7] + p[10], p[8] + p[11])),
                     Math.sqrt(squared(p[6] - p[9], p[7] - p[10], p[8] - p[11])));
             for (int b = 0; b < 8; ++b) {
                 double lambda = 1.2 * rnd.nextDouble() - 0.1;
                 double half = Math.max(1e-3, lambda * corner * (0.7 + 0.8 * rnd.nextDouble())
-                        + 2 * thickness * rnd.nextDouble());
+                        + 2 * bundle.thickness() * rnd.nextDouble());
                 double[] centre = new double[3];
                 for (int k = 0; k < 3; ++k)
                     centre[k] = p[k] + lambda * (p[3 + k] - p[k]) + 0.1 * half * rnd.nextGaussian();
@@ -1329,24 +1328,78 @@ class ShadowFrustumTest {
                     continue;
                 }
                 ++crossing;
-                double thick = thickness;
-                for (double[] e : segments) {
-                    double dx = e[3] - e[0];
-                    double dy = e[4] - e[1];
-                    double dz = e[5] - e[2];
-                    double length = Math.sqrt(squared(dx, dy, dz));
-                    Supplier<String> label = () -> "TC01: pyramid " + Arrays.toString(p) + " thickness " + thick
-                            + ", ball at " + at + " radius " + ball.radius + ", segment " + Arrays.toString(e);
-                    assertTrue(ball.crossedBy(e[0], e[1], e[2], dx / length, dy / length, dz / length, length),
-                            () -> label.get() + ": the segment must pass through the ball");
-                    assertFalse(holds(box, new double[] { e[3], e[4], e[5] }),
-                            () -> label.get() + ": the segment must end outside the box");
-                }
+                String pyramid = "pyramid " + Arrays.toString(p) + " thickness " + bundle.thickness() + ", ball at "
+                        + at + " radius " + ball.radius;
+                for (double[] e : bundle.segments())
+                    assertThroughBall(ball, box, e, "TC01", pyramid);
+                // ===== Boundary Values Tests =====
+                // TC11: the rays along the pyramid's four edges, moved (start and end) by the whole
+                // thickness away from the ball's centre at their section: the rays farthest from it
+                for (double[] e : edgeSegments(p, bundle.thickness(), ball))
+                    assertThroughBall(ball, box, e, "TC11", pyramid);
             }
         }
         // both answers are common: the test is not vacuous
         assertTrue(crossing > 200 && missing > 200, "TC01: too few crossing (" + crossing + ") or missing (" + missing
                 + ") balls");
+    }
+
+    /**
+     * Asserts that a segment passes through a ball's inside and ends outside a box.
+     *
+     * @param ball    the ball
+     * @param box     the box
+     * @param e       the segment, {start, end}
+     * @param tc      the test case's label
+     * @param pyramid the pyramid and ball, for the failure message
+     */
+    private static void assertThroughBall(InnerBall ball, double[] box, double[] e, String tc, String pyramid) {
+        double dx = e[3] - e[0];
+        double dy = e[4] - e[1];
+        double dz = e[5] - e[2];
+        double length = Math.sqrt(squared(dx, dy, dz));
+        Supplier<String> label = () -> tc + ": " + pyramid + ", segment " + Arrays.toString(e);
+        assertTrue(ball.crossedBy(e[0], e[1], e[2], dx / length, dy / length, dz / length, length),
+                () -> label.get() + ": the segment must pass through the ball");
+        assertFalse(holds(box, new double[] { e[3], e[4], e[5] }),
+                () -> label.get() + ": the segment must end outside the box");
+    }
+
+    /**
+     * The segments along a pyramid's four edges, from the apex to each corner of the base, each moved
+     * as a whole by the thickness away from a ball's centre at the fraction λ of the way where the
+     * ball's centre lies across the axis.
+     *
+     * @param p         the pyramid {apex, c, a, b}
+     * @param thickness the thickness
+     * @param ball      the ball
+     * @return the four segments, {start, end} each
+     */
+    private static double[][] edgeSegments(double[] p, double thickness, InnerBall ball) {
+        double[] w = { p[3] - p[0], p[4] - p[1], p[5] - p[2] };
+        double lambda = ((ball.cx - p[0]) * w[0] + (ball.cy - p[1]) * w[1] + (ball.cz - p[2]) * w[2])
+                / squared(w[0], w[1], w[2]);
+        double[] ball3 = { ball.cx, ball.cy, ball.cz };
+        double[][] segments = new double[4][];
+        int i = 0;
+        for (double s : new double[] { -1, 1 })
+            for (double r : new double[] { -1, 1 }) {
+                double[] corner = new double[3];
+                double[] away = new double[3];
+                for (int k = 0; k < 3; ++k) {
+                    corner[k] = p[3 + k] + s * p[6 + k] + r * p[9 + k];
+                    away[k] = p[k] + lambda * (corner[k] - p[k]) - ball3[k];
+                }
+                double length = Math.sqrt(squared(away[0], away[1], away[2]));
+                double[] segment = new double[6];
+                for (int k = 0; k < 3; ++k) {
+                    double move = length > 0 ? thickness * away[k] / length : 0;
+                    segment[k] = p[k] + move;
+                    segment[3 + k] = corner[k] + move;
+                }
+                segments[i++] = segment;
+            }
+        return segments;
     }
 
     /** {@return the squared length of a vector} */

@@ -1340,25 +1340,23 @@ class RayTracerBasicTest {
     }
 
     /**
-     * Renders the terminator scene with bundles and by brute force, adaptive sampling off and on, and
-     * asserts the pictures the same.
+     * Renders the terminator scene with bundles and by brute force and asserts the pictures the same:
+     * at most 0.1 % of the pixels differ, by at most 2 levels.
      *
-     * @param asMesh whether the sphere is one {@link TriangleMesh}
-     * @param name   the pictures' name
+     * @param asMesh   whether the sphere is one {@link TriangleMesh}
+     * @param name     the pictures' name
+     * @param adaptive whether adaptive sampling is on
+     * @param tc       the test case's label
+     * @return the picture rendered with bundles
      */
-    private static void assertTerminatorKept(boolean asMesh, String name) {
+    private static ImageWriter assertTerminatorKept(boolean asMesh, String name, boolean adaptive, String tc) {
         Camera camera = terminatorCamera();
-        for (boolean adaptive : new boolean[] { false, true }) {
-            String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
-            ImageWriter fast = renderBundleScene(terminatorScene(asMesh), camera, name, TERMINATOR_PICTURE_SIZE,
-                    false, adaptive);
-            ImageWriter scan = renderBundleScene(terminatorScene(asMesh), camera, name, TERMINATOR_PICTURE_SIZE,
-                    true, adaptive);
-            // ===== Equivalence Partitions Tests =====
-            // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
-            // force, by at most 2 levels
-            assertSamePicture(fast, scan, same);
-        }
+        ImageWriter fast = renderBundleScene(terminatorScene(asMesh), camera, name, TERMINATOR_PICTURE_SIZE, false,
+                adaptive);
+        ImageWriter scan = renderBundleScene(terminatorScene(asMesh), camera, name, TERMINATOR_PICTURE_SIZE, true,
+                adaptive);
+        assertSamePicture(fast, scan, tc);
+        return fast;
     }
 
     /**
@@ -1370,19 +1368,33 @@ class RayTracerBasicTest {
     void testThickShadowBundlesKeepPictures() {
         // the pixels that see a mesh point lit by the light's centre whose tangent plane cuts the square
         assertManyThickBundles(false);
-        assertTerminatorKept(false, "terminator");
+        // ===== Equivalence Partitions Tests =====
+        // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
+        // force, by at most 2 levels
+        assertTerminatorKept(false, "terminator", false, "TC01");
+        assertTerminatorKept(false, "terminator", true, "TC02 (adaptive sampling)");
     }
 
     /**
      * Test method for {@link RayTracerBasic#calcSoftShadows}: thick shadow bundles leaving a closed
      * {@link TriangleMesh} change no picture — the terminator scene with its sphere as one mesh (whose
      * inner ball blocks the rays of a packet that enter the mesh, untested) renders, with adaptive
-     * sampling off and on, as through a brute-force scan of every body.
+     * sampling off and on, as through a brute-force scan of every body, and as the same triangles given
+     * as {@link Triangle} objects (which have no inner ball).
      */
     @Test
     void testThickBundlesOnClosedMeshKeepPictures() {
         assertManyThickBundles(true);
-        assertTerminatorKept(true, "terminator-mesh");
+        // ===== Equivalence Partitions Tests =====
+        // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
+        // force, by at most 2 levels
+        ImageWriter mesh = assertTerminatorKept(true, "terminator-mesh", false, "TC01");
+        assertTerminatorKept(true, "terminator-mesh", true, "TC02 (adaptive sampling)");
+        // ===== Boundary Values Tests =====
+        // TC11: rendered with bundles, the mesh's picture is that of the Triangle objects (which have no
+        // inner ball): at most 0.1 % of the pixels differ, by at most 2 levels
+        assertSamePicture(mesh, renderBundleScene(terminatorScene(false), terminatorCamera(), "terminator",
+                TERMINATOR_PICTURE_SIZE, false, false), "TC11");
     }
 
     // ---------------------------------------------------------------------------------------------
