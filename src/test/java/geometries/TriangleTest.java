@@ -26,6 +26,8 @@ import primitives.Vector;
  * watertightness of triangles sharing an edge on the renderer's path.
  */
 class TriangleTest {
+    /** Tolerance on exact barycentric coordinates, distances and normals. */
+    private static final double DELTA = 1e-12;
     private static final Point3D P1 = new Point3D(1, 0, 0);
     private static final Point3D P2 = new Point3D(0, 1, 0);
     private static final Point3D P3 = new Point3D(0, 0, 1);
@@ -398,5 +400,100 @@ class TriangleTest {
         // TC11: its first vertex (1, 0, 5) on the side x = z/5, the rest outside: true
         assertTrue(new Triangle(new Point3D(1, 0, 5), new Point3D(2.5, 0, 10), new Point3D(5, 0, 10)).mayMeet(frustum),
                 "TC11: a triangle touching a side of the pyramid must meet it");
+    }
+
+    /**
+     * A triangle's data as {@link Triangle#project} takes them: p1, e1 = p2 − p1, e2 = p3 − p1.
+     *
+     * @param p1 the first vertex
+     * @param p2 the second vertex
+     * @param p3 the third vertex
+     * @return the nine numbers
+     */
+    private static double[] data(Point3D p1, Point3D p2, Point3D p3) {
+        Vector e1 = p2.subtract(p1);
+        Vector e2 = p3.subtract(p1);
+        return new double[] { p1.getX(), p1.getY(), p1.getZ(), e1.getX(), e1.getY(), e1.getZ(), e2.getX(), e2.getY(),
+                e2.getZ() };
+    }
+
+    /**
+     * Asserts what {@link Triangle#project} writes for a point.
+     *
+     * @param expected u, v, the signed distance and the unit normal, six numbers
+     * @param data     the triangle's data
+     * @param point    the point
+     * @param delta    the tolerance
+     * @param message  the failure message
+     */
+    private static void assertProjection(double[] expected, double[] data, Point3D point, double delta,
+                                         String message) {
+        double[] target = new double[Triangle.PROJECTION];
+        Triangle.project(data, point.getX(), point.getY(), point.getZ(), target);
+        String[] names = { "u", "v", "distance", "normal x", "normal y", "normal z" };
+        for (int k = 0; k < Triangle.PROJECTION; ++k)
+            assertEquals(expected[k], target[k], delta, message + " (" + names[k] + ")");
+    }
+
+    /**
+     * Test method for {@link Triangle#project}: the barycentric u (along e1), v (along e2) of a point's
+     * foot on the plane of P1 = (1, 0, 0), P2 = (0, 1, 0), P3 = (0, 0, 1) (e1 = (−1, 1, 0),
+     * e2 = (−1, 0, 1), unit normal e1 × e2 / |e1 × e2| = (1, 1, 1)/√3), its signed distance and the normal.
+     */
+    @Test
+    void testProject() {
+        double[] data = data(P1, P2, P3);
+        double s = 1 / Math.sqrt(3);
+        double third = 1.0 / 3;
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: (2, 2, 2), above the triangle's centre (⅓, ⅓, ⅓) by 5/√3 along the normal
+        assertProjection(new double[] { third, third, 5 * s, s, s, s }, data, new Point3D(2, 2, 2), DELTA,
+                "TC01: a point above the inside");
+        // TC02: the origin, below the centre by 1/√3: a negative distance
+        assertProjection(new double[] { third, third, -s, s, s, s }, data, Point3D.ZERO, DELTA,
+                "TC02: a point below the inside");
+        // TC03: (1, 1, −1) + 2·n, above the point p1 + e1 − e2 of the plane, outside the triangle: u 1, v −1
+        assertProjection(new double[] { 1, -1, 2, s, s, s }, data, new Point3D(1 + 2 * s, 1 + 2 * s, -1 + 2 * s),
+                DELTA, "TC03: a point whose foot lies outside");
+        // TC04: the edges given the other way round (p1, p3, p2): u and v swap, the normal and the
+        // distance turn round
+        assertProjection(new double[] { 0.25, 0.5, -2, -s, -s, -s }, data(P1, P3, P2),
+                pointAbove(data, 0.5, 0.25, 2), DELTA, "TC04: the edges swapped");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the vertices: (0, 0), (1, 0), (0, 1), at distance 0
+        assertProjection(new double[] { 0, 0, 0, s, s, s }, data, P1, DELTA, "TC11: p1");
+        assertProjection(new double[] { 1, 0, 0, s, s, s }, data, P2, DELTA, "TC11: p2");
+        assertProjection(new double[] { 0, 1, 0, s, s, s }, data, P3, DELTA, "TC11: p3");
+        // TC12: the middle of the edge p2p3, 1 below it: u = v = ½, u + v = 1
+        assertProjection(new double[] { 0.5, 0.5, -1, s, s, s }, data, pointAbove(data, 0.5, 0.5, -1), DELTA,
+                "TC12: below the middle of the edge p2p3");
+        // TC13: a tiny triangle far away (p1 (1000, 1000, 1000), e1 (1e-3, 0, 0), e2 (0, 1e-3, 0)): the
+        // point (½, ¼) of it, 2e-3 above: the same numbers, up to the rounding of coordinates near 1000
+        double[] tiny = { 1000, 1000, 1000, 1e-3, 0, 0, 0, 1e-3, 0 };
+        assertProjection(new double[] { 0.5, 0.25, 2e-3, 0, 0, 1 }, tiny, new Point3D(1000 + 0.5e-3, 1000 + 0.25e-3,
+                1000 + 2e-3), 1e-9, "TC13: a tiny triangle far away");
+        // TC14: only the six numbers are written: the target's seventh is left as it was
+        double[] target = { 9, 9, 9, 9, 9, 9, -7 };
+        Triangle.project(data, 2, 2, 2, target);
+        assertEquals(-7, target[Triangle.PROJECTION], 0, "TC14: a number past the projection must be left alone");
+        assertEquals(5 * s, target[2], DELTA, "TC14: the distance must be written");
+    }
+
+    /**
+     * The point p1 + u·e1 + v·e2 + h·n of a triangle's data (n the unit normal e1 × e2 / |e1 × e2|).
+     *
+     * @param data the triangle's data
+     * @param u    along e1
+     * @param v    along e2
+     * @param h    along the normal
+     * @return the point
+     */
+    private static Point3D pointAbove(double[] data, double u, double v, double h) {
+        Vector e1 = new Vector(data[3], data[4], data[5]);
+        Vector e2 = new Vector(data[6], data[7], data[8]);
+        Vector n = e1.crossProduct(e2).normalize();
+        return new Point3D(data[0], data[1], data[2]).add(e1.scale(u)).add(e2.scale(v)).add(n.scale(h));
     }
 }

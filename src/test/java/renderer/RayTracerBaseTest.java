@@ -42,6 +42,7 @@ class RayTracerBaseTest {
         assertEquals(0, tracer.getPrimaryRaysCount(), "TC04: the primary ray count must start at 0");
         assertEquals(0, tracer.getShadowRaysCount(), "TC04: the shadow ray count must start at 0");
         assertEquals(0, tracer.getOpenShadowRaysCount(), "TC04: the open shadow ray count must start at 0");
+        assertEquals(0, tracer.getBlockedShadowRaysCount(), "TC04: the blocked shadow ray count must start at 0");
         assertEquals(0, tracer.getSpreadRaysCount(), "TC04: the spread ray count must start at 0");
         // TC05: sqrtGlossRays 5 (= DEFAULT_SQRT_GLOSS_RAYS), a 5 × 5 gloss grid
         assertEquals(5, RayTracerBase.DEFAULT_SQRT_GLOSS_RAYS, "TC05: the default sqrtGlossRays must be 5");
@@ -202,13 +203,11 @@ class RayTracerBaseTest {
         // TC01: 5 rays counted on this thread and 7 on another give 12
         tracer.threadState().primaryRays += 5;
         tracer.threadState().openShadowRays += 3;
-        Thread other = new Thread(() -> {
+        onOtherThread(() -> {
             tracer.threadState().primaryRays += 7;
             tracer.threadState().shadowRays += 2;
             tracer.threadState().openShadowRays += 4;
         });
-        other.start();
-        other.join();
         assertEquals(12, tracer.getPrimaryRaysCount(), "TC01: the primary ray counts of both threads must add up");
         assertEquals(2, tracer.getShadowRaysCount(), "TC01: the shadow ray count must be the other thread's 2");
         assertEquals(7, tracer.getOpenShadowRaysCount(), "TC01: the open shadow ray counts 3 and 4 must add up to 7");
@@ -216,5 +215,47 @@ class RayTracerBaseTest {
         // ===== Boundary Values Tests =====
         // TC11: another tracer's counters stay at 0
         assertEquals(0, tracer().getPrimaryRaysCount(), "TC11: a new tracer's count must be 0");
+    }
+
+    /**
+     * Runs a job on another thread and waits for it.
+     *
+     * @param job the job
+     * @throws InterruptedException when the wait is interrupted
+     */
+    private static void onOtherThread(Runnable job) throws InterruptedException {
+        Thread other = new Thread(job);
+        other.start();
+        other.join();
+    }
+
+    /**
+     * Test method for {@link RayTracerBase#getBlockedShadowRaysCount()}: the counts of all threads are
+     * added up, apart from the other counters.
+     */
+    @Test
+    void testBlockedShadowRaysCount() throws InterruptedException {
+        RayTracerBase tracer = tracer();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 6 rays of blocked bundles counted on this thread and 9 on another give 15; the shadow rays
+        // (6 and 10) add up on their own, and no ray counts as open
+        tracer.threadState().blockedShadowRays += 6;
+        tracer.threadState().shadowRays += 6;
+        onOtherThread(() -> {
+            tracer.threadState().blockedShadowRays += 9;
+            tracer.threadState().shadowRays += 10;
+        });
+        assertEquals(15, tracer.getBlockedShadowRaysCount(), "TC01: the blocked counts 6 and 9 must add up to 15");
+        assertEquals(16, tracer.getShadowRaysCount(), "TC01: the shadow ray counts 6 and 10 must add up to 16");
+        assertEquals(0, tracer.getOpenShadowRaysCount(), "TC01: blocked rays must not count as open");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a thread that counted no blocked ray adds nothing
+        onOtherThread(() -> tracer.threadState().openShadowRays += 2);
+        assertEquals(15, tracer.getBlockedShadowRaysCount(), "TC11: a thread without blocked rays must add 0");
+        assertEquals(2, tracer.getOpenShadowRaysCount(), "TC11: the other thread's open rays are counted apart");
+        // TC12: another tracer's blocked count stays at 0
+        assertEquals(0, tracer().getBlockedShadowRaysCount(), "TC12: a new tracer's blocked count must be 0");
     }
 }

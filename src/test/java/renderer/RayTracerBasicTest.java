@@ -1073,7 +1073,23 @@ class RayTracerBasicTest {
      */
     private static ImageWriter renderBundleScene(Scene scene, Camera camera, String name, int size,
                                                  boolean bruteForce, boolean adaptive) {
-        RayTracerBasic tracer = new RayTracerBasic(scene);
+        return renderBundleScene(new RayTracerBasic(scene), camera, name, size, bruteForce, adaptive);
+    }
+
+    /**
+     * Renders a scene of the bundle tests as {@link #renderBundleScene(Scene, Camera, String, int, boolean,
+     * boolean)} does, with a ray tracer of the caller's (whose ray counts it can then read).
+     *
+     * @param tracer     the ray tracer of the scene
+     * @param camera     the camera
+     * @param name       the picture's name
+     * @param size       the picture's width and height
+     * @param bruteForce true for the brute-force scan
+     * @param adaptive   whether adaptive sampling is on
+     * @return the rendered picture
+     */
+    private static ImageWriter renderBundleScene(RayTracerBasic tracer, Camera camera, String name, int size,
+                                                 boolean bruteForce, boolean adaptive) {
         tracer.setBruteForce(bruteForce);
         ImageWriter image = new ImageWriter(name + (adaptive ? "-adaptive" : "") + (bruteForce ? "-scan" : "-bvh"),
                 size, size, PICTURE_FOLDER.resolve("bundles"));
@@ -1108,39 +1124,13 @@ class RayTracerBasicTest {
      */
     @Test
     void testShadowBundlesKeepPictures() {
-        // n·l at each pixel that sees the floor (NaN elsewhere), found by brute force
-        Scene reference = bundleScene();
-        Plane floor = (Plane) reference.geometries.getGeometries().get(0);
         Camera camera = bundleCamera();
-        double[][] floorNl = new double[BUNDLE_PICTURE_SIZE][BUNDLE_PICTURE_SIZE];
-        for (int y = 0; y < BUNDLE_PICTURE_SIZE; ++y)
-            for (int x = 0; x < BUNDLE_PICTURE_SIZE; ++x) {
-                GeoPoint hit = seen(reference, camera, BUNDLE_PICTURE_SIZE, x, y);
-                floorNl[y][x] = hit == null || hit.geometry != floor ? Double.NaN
-                        : BUNDLE_LIGHT.getZ() / hit.point.distance(BUNDLE_LIGHT);
-            }
+        double[][] floorNl = floorNl(bundleScene(), camera, BUNDLE_PICTURE_SIZE);
         for (boolean adaptive : new boolean[] { false, true }) {
             String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
             String shadow = adaptive ? "TC12 (adaptive sampling)" : "TC11";
             ImageWriter fast = renderBundleScene(bundleScene(), camera, "bundles", BUNDLE_PICTURE_SIZE, false, adaptive);
             ImageWriter scan = renderBundleScene(bundleScene(), camera, "bundles", BUNDLE_PICTURE_SIZE, true, adaptive);
-            // the share of the light each floor pixel gets: its grey over the unshadowed kD·I·(n·l)
-            double darkest = Double.POSITIVE_INFINITY;
-            double brightest = 0;
-            List<Double> shares = new ArrayList<>();
-            for (int y = 0; y < BUNDLE_PICTURE_SIZE; ++y)
-                for (int x = 0; x < BUNDLE_PICTURE_SIZE; ++x) {
-                    if (Double.isNaN(floorNl[y][x]))
-                        continue;
-                    double share = fast.getPixel(x, y).getRed() / (BUNDLE_INTENSITY * floorNl[y][x]);
-                    shares.add(share);
-                    darkest = Math.min(darkest, share);
-                    brightest = Math.max(brightest, share);
-                }
-            int penumbra = 0;
-            for (double share : shares)
-                if (share > darkest + 0.05 && share < brightest - 0.05)
-                    ++penumbra;
             // ===== Equivalence Partitions Tests =====
             // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
             // force, by at most 2 levels
@@ -1148,9 +1138,121 @@ class RayTracerBasicTest {
             // ===== Boundary Values Tests =====
             // TC11: adaptive sampling off; TC12: on: the floor has an umbra (share < 0.02), fully lit
             // parts (share > 0.98) and a penumbra of at least 50 pixels strictly between them
-            assertTrue(darkest < 0.02 && brightest > 0.98, shadow + ": the floor must have an umbra and lit parts, got "
-                    + darkest + " to " + brightest);
-            assertTrue(penumbra >= 50, shadow + ": the floor must have a penumbra, found " + penumbra + " pixels");
+            assertSoftShadow(fast, floorNl, 50, shadow);
+        }
+    }
+
+    /**
+     * n·l of the bundle scenes' light at each pixel that sees the floor (NaN elsewhere), found by
+     * brute force.
+     *
+     * @param scene  a scene of the bundle tests, the floor its first body
+     * @param camera the camera
+     * @param size   the picture's width and height
+     * @return n·l by row and column
+     */
+    private static double[][] floorNl(Scene scene, Camera camera, int size) {
+        Plane floor = (Plane) scene.geometries.getGeometries().get(0);
+        double[][] floorNl = new double[size][size];
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                GeoPoint hit = seen(scene, camera, size, x, y);
+                floorNl[y][x] = hit == null || hit.geometry != floor ? Double.NaN
+                        : BUNDLE_LIGHT.getZ() / hit.point.distance(BUNDLE_LIGHT);
+            }
+        return floorNl;
+    }
+
+    /**
+     * Asserts that the floor of a bundle picture has a soft shadow: the share of the light a floor pixel
+     * gets (its grey over the unshadowed kD·I·(n·l)) falls below 0.02 in an umbra and exceeds 0.98 in
+     * fully lit parts, and enough pixels lie strictly between the two (by 0.05), in a penumbra.
+     *
+     * @param picture  the picture
+     * @param floorNl  n·l at each pixel that sees the floor, NaN elsewhere ({@link #floorNl})
+     * @param penumbra the fewest penumbra pixels
+     * @param tc       the test case's label
+     */
+    private static void assertSoftShadow(ImageWriter picture, double[][] floorNl, int penumbra, String tc) {
+        double darkest = Double.POSITIVE_INFINITY;
+        double brightest = 0;
+        List<Double> shares = new ArrayList<>();
+        for (int y = 0; y < floorNl.length; ++y)
+            for (int x = 0; x < floorNl.length; ++x) {
+                if (Double.isNaN(floorNl[y][x]))
+                    continue;
+                double share = picture.getPixel(x, y).getRed() / (BUNDLE_INTENSITY * floorNl[y][x]);
+                shares.add(share);
+                darkest = Math.min(darkest, share);
+                brightest = Math.max(brightest, share);
+            }
+        int between = 0;
+        for (double share : shares)
+            if (share > darkest + 0.05 && share < brightest - 0.05)
+                ++between;
+        assertTrue(darkest < 0.02 && brightest > 0.98, tc + ": the floor must have an umbra and lit parts, got "
+                + darkest + " to " + brightest);
+        assertTrue(between >= penumbra, tc + ": the floor must have a penumbra, found " + between + " pixels");
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Blocked bundles: three opaque closed sphere meshes (one TriangleMesh each, 224 triangles) high over
+    // the floor, lit by a square light of edge 12 at the bundle scenes' light's place (height 100), seen
+    // by the bundle pictures' camera. Each mesh's umbra lies off its own footprint, in sight: there
+    // every ray of a bundle passes through the mesh's inner ball (its cross-section about 2 to 3 from
+    // the axis where the ball's radius is 5.4 to 7.3), and the bundle is blocked without a ray traced.
+    // ---------------------------------------------------------------------------------------------
+
+    private static final int SOLID_PICTURE_SIZE = 64;
+
+    /** The scene of closed meshes: the floor is its first body. */
+    private static Scene solidScene() {
+        Scene scene = new Scene("closed meshes");
+        scene.geometries.add(floor(new Material().setKd(1), Color.BLACK));
+        Material matte = new Material().setKd(0.5);
+        Point3D[] centres = { new Point3D(-30, 20, 30), new Point3D(25, -20, 20), new Point3D(20, 25, 35) };
+        double[] radii = { 7, 6, 8 };
+        for (int m = 0; m < centres.length; ++m)
+            scene.geometries.add(benchmark.SphereMesh.mesh(centres[m], radii[m], 8, 16).setMaterial(matte));
+        scene.lights.add(new PointLight(new Color(BUNDLE_INTENSITY, BUNDLE_INTENSITY, BUNDLE_INTENSITY), BUNDLE_LIGHT)
+                .setEdgesSize(12).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
+        return scene;
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#calcSoftShadows} and {@link RayTracerBase#getBlockedShadowRaysCount()}:
+     * bundles blocked whole by closed opaque meshes change no picture — the scene of closed meshes
+     * renders, with adaptive sampling off and on, as through a brute-force scan of every body, which
+     * blocks no bundle, while the hierarchy blocks many.
+     */
+    @Test
+    void testBlockedBundlesKeepPictures() {
+        Camera camera = bundleCamera();
+        double[][] floorNl = floorNl(solidScene(), camera, SOLID_PICTURE_SIZE);
+        for (boolean adaptive : new boolean[] { false, true }) {
+            String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
+            String counted = adaptive ? "TC04 (adaptive sampling)" : "TC03";
+            String shadow = adaptive ? "TC12 (adaptive sampling)" : "TC11";
+            RayTracerBasic fastTracer = new RayTracerBasic(solidScene());
+            RayTracerBasic scanTracer = new RayTracerBasic(solidScene());
+            ImageWriter fast = renderBundleScene(fastTracer, camera, "solids", SOLID_PICTURE_SIZE, false, adaptive);
+            ImageWriter scan = renderBundleScene(scanTracer, camera, "solids", SOLID_PICTURE_SIZE, true, adaptive);
+            // ===== Equivalence Partitions Tests =====
+            // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
+            // force, by at most 2 levels
+            assertSamePicture(fast, scan, same);
+            // TC03: adaptive sampling off; TC04: on: the hierarchy blocks bundles of at least 1000 shadow
+            // rays (not all of them), the brute force none
+            long blocked = fastTracer.getBlockedShadowRaysCount();
+            long shadowRays = fastTracer.getShadowRaysCount();
+            assertTrue(blocked >= 1000 && blocked < shadowRays, counted + ": " + blocked + " of "
+                    + shadowRays + " shadow rays in blocked bundles");
+            assertEquals(0, scanTracer.getBlockedShadowRaysCount(), counted + ": the brute force must block no bundle");
+            assertTrue(scanTracer.getShadowRaysCount() > 0, counted + ": the brute force traces shadow rays");
+            // ===== Boundary Values Tests =====
+            // TC11: adaptive sampling off; TC12: on: the floor has an umbra (share < 0.02), fully lit
+            // parts (share > 0.98) and a penumbra of at least 30 pixels strictly between them
+            assertSoftShadow(fast, floorNl, 30, shadow);
         }
     }
 
@@ -1168,13 +1270,27 @@ class RayTracerBasicTest {
 
     /** The terminator scene: a floor, then the mesh sphere's triangles. */
     private static Scene terminatorScene() {
+        return terminatorScene(false);
+    }
+
+    /**
+     * The terminator scene: a floor, then the mesh sphere, as {@link Triangle} objects or as one closed
+     * {@link TriangleMesh} (whose inner ball then blocks rays).
+     *
+     * @param asMesh whether the sphere is one {@link TriangleMesh}
+     * @return the scene
+     */
+    private static Scene terminatorScene(boolean asMesh) {
         Scene scene = new Scene("thick shadow bundles");
         Plane plane = new Plane(new Point3D(0, 0, -10), new Vector(0, 0, 1));
         plane.setMaterial(new Material().setKd(1));
         scene.geometries.add(plane);
         Material matte = new Material().setKd(0.8);
-        for (Triangle triangle : benchmark.SphereMesh.triangles(Point3D.ZERO, 10, 12, 22))
-            scene.geometries.add(triangle.setMaterial(matte));
+        if (asMesh)
+            scene.geometries.add(benchmark.SphereMesh.mesh(Point3D.ZERO, 10, 12, 22).setMaterial(matte));
+        else
+            for (Triangle triangle : benchmark.SphereMesh.triangles(Point3D.ZERO, 10, 12, 22))
+                scene.geometries.add(triangle.setMaterial(matte));
         scene.lights.add(new PointLight(new Color(200, 200, 200), TERMINATOR_LIGHT)
                 .setEdgesSize(2 * TERMINATOR_HALF_EDGE).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
         return scene;
@@ -1186,21 +1302,21 @@ class RayTracerBasicTest {
     }
 
     /**
-     * Test method for {@link RayTracerBasic#calcSoftShadows}: thick shadow bundles (the light's square
-     * partly below a lit point's tangent plane) change no picture — the terminator scene renders, with
-     * adaptive sampling off and on, as through a brute-force scan of every body.
+     * Asserts that the terminator scene is as intended: most pixels that see a point of the sphere lit
+     * by the light's centre see one whose tangent plane cuts the light's square, whose bundle is thick.
+     *
+     * @param asMesh whether the sphere is one {@link TriangleMesh}
      */
-    @Test
-    void testThickShadowBundlesKeepPictures() {
-        // the pixels that see a mesh point lit by the light's centre whose tangent plane cuts the square
-        Scene reference = terminatorScene();
+    private static void assertManyThickBundles(boolean asMesh) {
+        Scene reference = terminatorScene(asMesh);
         Camera camera = terminatorCamera();
+        Plane floor = (Plane) reference.geometries.getGeometries().get(0);
         int thick = 0;
         int lit = 0;
         for (int y = 0; y < TERMINATOR_PICTURE_SIZE; ++y)
             for (int x = 0; x < TERMINATOR_PICTURE_SIZE; ++x) {
                 GeoPoint hit = seen(reference, camera, TERMINATOR_PICTURE_SIZE, x, y);
-                if (hit == null || !(hit.geometry instanceof Triangle))
+                if (hit == null || hit.geometry == floor)
                     continue;
                 Vector n = hit.geometry.getNormal(hit.point);
                 if (n.dotProduct(TERMINATOR_LIGHT.subtract(hit.point)) <= 0)
@@ -1219,20 +1335,66 @@ class RayTracerBasicTest {
                 if (above && below)
                     ++thick;
             }
-        // the scene is as intended: most lit mesh pixels are traced through thick bundles
         assertTrue(thick >= 300 && thick >= lit / 2, "the scene must have many thick bundles, got " + thick + " of "
                 + lit + " lit mesh pixels");
-        for (boolean adaptive : new boolean[] { false, true }) {
-            String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
-            ImageWriter fast = renderBundleScene(terminatorScene(), camera, "terminator", TERMINATOR_PICTURE_SIZE,
-                    false, adaptive);
-            ImageWriter scan = renderBundleScene(terminatorScene(), camera, "terminator", TERMINATOR_PICTURE_SIZE,
-                    true, adaptive);
-            // ===== Equivalence Partitions Tests =====
-            // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
-            // force, by at most 2 levels
-            assertSamePicture(fast, scan, same);
-        }
+    }
+
+    /**
+     * Renders the terminator scene with bundles and by brute force and asserts the pictures the same:
+     * at most 0.1 % of the pixels differ, by at most 2 levels.
+     *
+     * @param asMesh   whether the sphere is one {@link TriangleMesh}
+     * @param name     the pictures' name
+     * @param adaptive whether adaptive sampling is on
+     * @param tc       the test case's label
+     * @return the picture rendered with bundles
+     */
+    private static ImageWriter assertTerminatorKept(boolean asMesh, String name, boolean adaptive, String tc) {
+        Camera camera = terminatorCamera();
+        ImageWriter fast = renderBundleScene(terminatorScene(asMesh), camera, name, TERMINATOR_PICTURE_SIZE, false,
+                adaptive);
+        ImageWriter scan = renderBundleScene(terminatorScene(asMesh), camera, name, TERMINATOR_PICTURE_SIZE, true,
+                adaptive);
+        assertSamePicture(fast, scan, tc);
+        return fast;
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#calcSoftShadows}: thick shadow bundles (the light's square
+     * partly below a lit point's tangent plane) change no picture — the terminator scene renders, with
+     * adaptive sampling off and on, as through a brute-force scan of every body.
+     */
+    @Test
+    void testThickShadowBundlesKeepPictures() {
+        // the pixels that see a mesh point lit by the light's centre whose tangent plane cuts the square
+        assertManyThickBundles(false);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
+        // force, by at most 2 levels
+        assertTerminatorKept(false, "terminator", false, "TC01");
+        assertTerminatorKept(false, "terminator", true, "TC02 (adaptive sampling)");
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#calcSoftShadows}: thick shadow bundles leaving a closed
+     * {@link TriangleMesh} change no picture — the terminator scene with its sphere as one mesh (whose
+     * inner ball blocks the rays of a packet that enter the mesh, untested) renders, with adaptive
+     * sampling off and on, as through a brute-force scan of every body, and as the same triangles given
+     * as {@link Triangle} objects (which have no inner ball).
+     */
+    @Test
+    void testThickBundlesOnClosedMeshKeepPictures() {
+        assertManyThickBundles(true);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
+        // force, by at most 2 levels
+        ImageWriter mesh = assertTerminatorKept(true, "terminator-mesh", false, "TC01");
+        assertTerminatorKept(true, "terminator-mesh", true, "TC02 (adaptive sampling)");
+        // ===== Boundary Values Tests =====
+        // TC11: rendered with bundles, the mesh's picture is that of the Triangle objects (which have no
+        // inner ball): at most 0.1 % of the pixels differ, by at most 2 levels
+        assertSamePicture(mesh, renderBundleScene(terminatorScene(false), terminatorCamera(), "terminator",
+                TERMINATOR_PICTURE_SIZE, false, false), "TC11");
     }
 
     // ---------------------------------------------------------------------------------------------
