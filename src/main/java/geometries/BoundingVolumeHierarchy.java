@@ -36,7 +36,9 @@ import static primitives.Util.requireNonNull;
  * with the bundle's pyramid (a {@link ShadowFrustum}) and keeps the few bodies that may meet it, or
  * their smallest subtree when they are many; {@link #gatheredTransmittance} then tests a ray against
  * those alone, and {@link #gatheredTransmittances} all the rays of the bundle at once, walking a kept
- * subtree as one packet.
+ * subtree as one packet. A closed opaque mesh whose inner ball ({@link InnerBall}) lies across every
+ * ray of a bundle blocks the whole bundle at the gather ({@link #blocksBundle}), and a packet's ray
+ * through such a ball is blocked before the walk.
  * <p>
  * Queries take a {@link Query}, the caller's per-thread scratch space, and allocate nothing but
  * the {@link GeoPoint} a closest-hit query returns.

@@ -13,11 +13,11 @@ import java.util.List;
  * ball on the way to a light outside the mesh's box, without a triangle being tested: the solid core
  * of an occluder, which lets a whole bundle of shadow rays in a body's umbra be answered at once.
  * <p>
- * The ball is centred on the vertices' mean or on the centre of their box, whichever lies inside
- * the mesh with the larger ball around it; its radius is the distance from the centre to the nearest
- * triangle, less a rounding margin. Whether a centre lies inside is told by the parity of the
- * crossings of three rays from it, each of which must be sure (no crossing near an edge or along a
- * triangle) and odd.
+ * The ball is centred on the mean of the triangles' corners or on the centre of their box: the one
+ * of the larger ball whose centre lies surely inside the mesh. Its radius is the distance from the
+ * centre to the nearest triangle, less a rounding margin. Whether a centre lies inside is told by the
+ * parity of the crossings of three rays from it, each of which must be sure (no crossing near an edge
+ * or along a triangle) and odd.
  */
 final class InnerBall {
     /** The part of the distance to the nearest triangle kept off the radius, for rounding. */

@@ -16,6 +16,9 @@ package geometries;
  * The surface the rays leave lies around the apex, where no face of the pyramid sets it aside: a
  * back face ({@link #setBackFace}) does when every ray leaves the surface on one side, and the rays'
  * two starts ({@link #setStarts}) do when they leave it on both sides.
+ * <p>
+ * A closed mesh's inner ball that the pyramid passes through, on its way to a base outside the
+ * mesh's box, lies across every ray ({@link #crossesSolid}): the mesh blocks the whole bundle.
  */
 public final class ShadowFrustum {
     /** How far outside, relative to the pyramid's size, a box or plane must be to be set aside. */
