@@ -47,8 +47,8 @@ import scene.Scene;
  * <p>
  * Options: {@code --scene} a scene, several separated by commas, or {@code all} (the default: S and
  * M), {@code --frames N} timed frames (default 5), {@code --warmup N} untimed frames first (default
- * 5: on two cores the JIT's optimising compiler, which shares them with the rendering threads, takes
- * a few seconds after a scene starts to settle, and a frame timed earlier is not warm),
+ * 10: on two cores the JIT's optimising compiler, which shares them with the rendering threads, took
+ * 1 to 3.5 seconds after a scene started to settle, and a frame timed earlier is not warm),
  * {@code --threads N} (default 0, all cores). The last frame of each scene is written to
  * {@code target/benchmark/<scene>.png}.
  */
@@ -98,7 +98,7 @@ public final class Benchmark {
     public static void main(String[] args) {
         String sceneOption = "all";
         int frames = 5;
-        int warmup = 5;
+        int warmup = 10;
         int threads = 0;
         for (int a = 0; a < args.length; a += 2) {
             if (a + 1 >= args.length)
