@@ -591,14 +591,14 @@ public final class BoundingVolumeHierarchy {
         int count = 0;
         for (int s = 0; s < solids.length; ++s) {
             InnerBall ball = solidBalls[s];
-            if (solids[s].getMaterial().getKt() == 0 && frustum.meetsBox(ball.box(), 0)
-                    && frustum.baseOutside(solidBoxes, 6 * s)) {
-                if (frustum.sectionInside(ball)) {
-                    query.blocked = true;
-                    return true;
-                }
-                query.solidList[count++] = s;
+            if (solids[s].getMaterial().getKt() != 0 || !frustum.meetsBox(ball.box(), 0))
+                continue;
+            if (frustum.crossesSolid(ball, solidBoxes, 6 * s)) {
+                query.blocked = true;
+                return true;
             }
+            if (frustum.baseOutside(solidBoxes, 6 * s))
+                query.solidList[count++] = s;
         }
         query.solidCount = count;
         return false;
