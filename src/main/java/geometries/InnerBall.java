@@ -92,9 +92,10 @@ final class InnerBall {
         if (!isClosed(mesh))
             return null;
         double[] data = new double[TriangleMesh.TRIANGLE_DATA];
+        double scale = largestCoordinate(mesh);
         List<InnerBall> balls = new ArrayList<>();
         for (double[] centre : centres(mesh, data)) {
-            InnerBall ball = around(mesh, data, centre);
+            InnerBall ball = around(mesh, data, centre, scale);
             if (ball != null)
                 balls.add(ball);
         }
@@ -179,6 +180,16 @@ final class InnerBall {
         return new double[][] { mean, middle };
     }
 
+    /** {@return the largest |coordinate| of a mesh's box} */
+    private static double largestCoordinate(TriangleMesh mesh) {
+        double[] box = new double[6];
+        mesh.bounds(box, 0);
+        double scale = 0;
+        for (double bound : box)
+            scale = Math.max(scale, Math.abs(bound));
+        return scale;
+    }
+
     /**
      * Whether a ball's centre lies surely inside a closed mesh: each parity ray from it is sure and
      * crosses the mesh an odd number of times.
@@ -200,16 +211,12 @@ final class InnerBall {
      * triangle less a relative margin and an absolute one for the rounding of coordinates as large as
      * the mesh's; whether it lies inside the mesh is not asked.
      *
-     * @param data scratch space for a triangle's data
+     * @param data  scratch space for a triangle's data
+     * @param scale the largest |coordinate| of the mesh's box
      * @return the ball, or null when the centre is (nearly) on a triangle
      */
-    private static InnerBall around(TriangleMesh mesh, double[] data, double[] centre) {
+    private static InnerBall around(TriangleMesh mesh, double[] data, double[] centre, double scale) {
         double nearest = Double.POSITIVE_INFINITY;
-        double[] box = new double[6];
-        mesh.bounds(box, 0);
-        double scale = 0;
-        for (int k = 0; k < 6; ++k)
-            scale = Math.max(scale, Math.abs(box[k]));
         double[] foot = new double[Triangle.PROJECTION];
         for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
             mesh.triangleData(t, data, 0);

@@ -425,7 +425,7 @@ public final class ShadowFrustum {
      *         refused {@link #set})
      */
     boolean crossesSolid(InnerBall ball, double[] boxes, int offset) {
-        return valid && baseOutside(boxes, offset) && sectionInside(ball);
+        return baseOutside(boxes, offset) && sectionInside(ball);
     }
 
     /** Whether the base, grown by the thickness and margin, lies outside the box at an offset of an array. */
