@@ -1,7 +1,9 @@
 package benchmark;
 
 import java.lang.management.ManagementFactory;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
@@ -9,6 +11,7 @@ import geometries.BoundingVolumeHierarchy;
 import geometries.Geometry;
 import geometries.Plane;
 import geometries.Sphere;
+import geometries.Triangle;
 import geometries.TriangleMesh;
 import lighting.PointLight;
 import primitives.Color;
@@ -20,6 +23,7 @@ import renderer.ImageWriter;
 import renderer.RayTracerBasic;
 import renderer.Render;
 import scene.Scene;
+import scenefile.ObjMesh;
 
 /**
  * The project's speed benchmark (SPEC §8). It renders the reference scenes: S (three spheres on a
@@ -54,8 +58,17 @@ import scene.Scene;
  */
 public final class Benchmark {
     /** The scenes, by name. */
-    private static final List<String> SCENES = List.of("S", "M", "G10k", "G100k", "G1M", "F2", "SDOF", "SAA", "SAAA",
-            "SG");
+    private static final List<String> SCENES = List.of("S", "M", "M1", "MS", "G10k", "G100k", "G1M", "F2", "SDOF",
+            "SAA", "SAAA", "SG");
+    /** The prefix of a real-mesh scene's name: the rest is the OBJ file's path. */
+    private static final String OBJ_PREFIX = "obj:";
+    /** A real mesh's largest extent, in scene units: about half the view plane's 150. */
+    private static final double OBJ_EXTENT = 75;
+    /** The floor's height, which S's bodies and a real mesh stand on. */
+    private static final double FLOOR_Y = -50;
+    /** The light of the real-mesh scenes: its edge and its centre. */
+    private static final double OBJ_LIGHT_EDGE = 40;
+    private static final Point3D OBJ_LIGHT = new Point3D(-70, 100, 40);
     /** The width and height of the pictures of S and M, in pixels. */
     private static final int SIZE = 800;
     /** The width and height of the pictures of the terrains and the forest, in pixels. */
@@ -81,6 +94,10 @@ public final class Benchmark {
     private static final int APERTURE_RAYS = 3;
     /** SAA's and SAAA's anti-aliasing: rays along each side of a pixel. */
     private static final int ANTI_ALIASING = 4;
+    /** The centres and radii of S's spheres. */
+    private static final Point3D[] CENTERS = { new Point3D(-40, -20, 0), new Point3D(30, -30, 20),
+            new Point3D(5, -35, -50) };
+    private static final double[] RADII = { 30, 20, 15 };
     /** The material of every body. */
     private static final Material DIFFUSE = new Material().setKd(0.8);
     /** The floor of scene SG: half diffuse, half a glossy mirror. */
@@ -114,14 +131,19 @@ public final class Benchmark {
         }
         List<String> scenes = sceneOption.equals("all") ? List.of("S", "M") : List.of(sceneOption.split(","));
         for (String name : scenes)
-            if (!SCENES.contains(name))
-                usage("--scene must be all or among " + String.join(", ", SCENES) + ", got " + name);
+            if (!SCENES.contains(name) && !name.startsWith(OBJ_PREFIX))
+                usage("--scene must be all, among " + String.join(", ", SCENES) + " or obj:PATH, got " + name);
         int threadsUsed = threads == 0 ? Runtime.getRuntime().availableProcessors() : threads;
         System.out.printf("JVM %s (%s), %d available processors, %d threads, %d warm-up + %d timed frames%n",
                 Runtime.version(), System.getProperty("java.vm.name"), Runtime.getRuntime().availableProcessors(),
                 threadsUsed, warmup, frames);
-        for (String name : scenes)
+        for (String name : scenes) {
+            if (name.startsWith(OBJ_PREFIX) && !Files.isReadable(Path.of(name.substring(OBJ_PREFIX.length())))) {
+                System.out.printf("%s: skipped, no such file%n", name);
+                continue;
+            }
             run(name, frames, warmup, threadsUsed);
+        }
     }
 
     /**
@@ -163,49 +185,104 @@ public final class Benchmark {
      * @param threads the number of threads
      */
     private static void render(String name, Scene scene, int frames, int warmup, int threads) {
-        RayTracerBasic rayTracer = new RayTracerBasic(scene);
-        Camera camera = new Camera(new Point3D(0, 0, 1000), new Vector(0, 0, -1), new Vector(0, 1, 0))
-                .setVpSize(150, 150).setVpDistance(1000);
-        int size = sizeOf(name);
-        Render render = new Render().setImageWriter(new ImageWriter(name, size, size, OUTPUT)).setCamera(camera)
-                .setRayTracer(rayTracer).setSoftShadows(true).setSqrtBeamNum(9).setMultithreading(threads);
-        improve(name, camera, render);
+        Frame frame = new Frame(name, scene, threads);
         double first = 0;
         for (int f = 0; f < warmup; ++f) {
-            double frame = timedRender(render);
+            double seconds = frame.timedRender();
             if (f == 0)
-                first = frame;
+                first = seconds;
         }
         double[] seconds = new double[frames];
-        long primary = 0;
-        long shadow = 0;
-        long open = 0;
-        long blocked = 0;
-        long spread = 0;
+        long[] counts = null;
         for (int f = 0; f < frames; ++f) {
-            long primaryBefore = rayTracer.getPrimaryRaysCount();
-            long shadowBefore = rayTracer.getShadowRaysCount();
-            long openBefore = rayTracer.getOpenShadowRaysCount();
-            long blockedBefore = rayTracer.getBlockedShadowRaysCount();
-            long spreadBefore = rayTracer.getSpreadRaysCount();
-            seconds[f] = timedRender(render);
-            primary = rayTracer.getPrimaryRaysCount() - primaryBefore;
-            shadow = rayTracer.getShadowRaysCount() - shadowBefore;
-            open = rayTracer.getOpenShadowRaysCount() - openBefore;
-            blocked = rayTracer.getBlockedShadowRaysCount() - blockedBefore;
-            spread = rayTracer.getSpreadRaysCount() - spreadBefore;
+            seconds[f] = frame.timedRender();
+            counts = frame.counts();
         }
-        render.writeToImage();
+        frame.render.writeToImage();
         if (warmup == 0)
             first = seconds[0];
         double median = median(seconds);
+        long primary = counts[0];
+        long shadow = counts[1];
+        long open = counts[2];
+        long blocked = counts[3];
+        long spread = counts[4];
+        long traced = shadow - open - blocked;
         System.out.printf("%s: %d pixels, %d primary rays/frame, %d shadow rays/frame (%.1f %% in open bundles,"
                         + " %.1f %% in blocked ones), first frame %.3f s (with the build), median %.3f s/frame (frames %s s),"
                         + " %.2f M shadow rays/s, %.2f M rays/s%n",
-                name, size * size, primary, shadow, 100.0 * open / shadow, 100.0 * blocked / shadow, first, median,
-                format(seconds), shadow / median / 1e6, (primary + shadow + spread) / median / 1e6);
+                name, frame.size * frame.size, primary, shadow, 100.0 * open / shadow, 100.0 * blocked / shadow, first,
+                median, format(seconds), shadow / median / 1e6, (primary + shadow + spread) / median / 1e6);
+        System.out.printf("%s: %d traced shadow rays/frame, %.0f ns of thread time per traced shadow ray"
+                        + " (threads x frame / traced rays: shading and primary rays included)%n",
+                name, traced, threads * median * 1e9 / traced);
         if (spread > 0)
             System.out.printf("%s: %d spread rays/frame%n", name, spread);
+    }
+
+    /**
+     * One scene's frames: its render and ray tracer, made once, or for the course-style scene MS anew
+     * every frame (as a student's test makes them), and the counts of the last frame's rays.
+     */
+    private static final class Frame {
+        private final String name;
+        private final Scene scene;
+        private final int threads;
+        private final int size;
+        private RayTracerBasic rayTracer;
+        private Render render;
+        private long[] before = new long[5];
+
+        Frame(String name, Scene scene, int threads) {
+            this.name = name;
+            this.scene = scene;
+            this.threads = threads;
+            this.size = sizeOf(name);
+            make();
+        }
+
+        /** Makes the render and its ray tracer. */
+        private void make() {
+            rayTracer = new RayTracerBasic(scene);
+            Camera camera = new Camera(new Point3D(0, 0, 1000), new Vector(0, 0, -1), new Vector(0, 1, 0))
+                    .setVpSize(150, 150).setVpDistance(1000);
+            render = new Render().setImageWriter(new ImageWriter(outputName(name), size, size, OUTPUT))
+                    .setCamera(camera).setRayTracer(rayTracer).setSoftShadows(true).setSqrtBeamNum(9)
+                    .setMultithreading(threads);
+            improve(name, camera, render);
+        }
+
+        /** {@return the seconds of rendering one frame (for MS, with a new render and ray tracer)} */
+        double timedRender() {
+            long start = System.nanoTime();
+            if (name.equals("MS"))
+                make();
+            before = totals();
+            render.renderImage();
+            return (System.nanoTime() - start) / 1e9;
+        }
+
+        /** {@return the primary, shadow, open, blocked and spread rays of the last frame} */
+        long[] counts() {
+            long[] after = totals();
+            for (int k = 0; k < after.length; ++k)
+                after[k] -= before[k];
+            return after;
+        }
+
+        private long[] totals() {
+            return new long[] { rayTracer.getPrimaryRaysCount(), rayTracer.getShadowRaysCount(),
+                    rayTracer.getOpenShadowRaysCount(), rayTracer.getBlockedShadowRaysCount(),
+                    rayTracer.getSpreadRaysCount() };
+        }
+    }
+
+    /** {@return a file name for a scene's picture: a real mesh's is its OBJ file's name} */
+    private static String outputName(String name) {
+        if (!name.startsWith(OBJ_PREFIX))
+            return name;
+        String file = Path.of(name.substring(OBJ_PREFIX.length())).getFileName().toString();
+        return "obj-" + file.replaceFirst("\\.obj$", "");
     }
 
     /**
@@ -224,18 +301,6 @@ public final class Benchmark {
         }
     }
 
-    /**
-     * Renders one frame.
-     *
-     * @param render the render
-     * @return the seconds it took
-     */
-    private static double timedRender(Render render) {
-        long start = System.nanoTime();
-        render.renderImage();
-        return (System.nanoTime() - start) / 1e9;
-    }
-
     /** {@return the heap in use after a full collection, in bytes} */
     private static long heapUsed() {
         for (int i = 0; i < 3; ++i)
@@ -250,7 +315,7 @@ public final class Benchmark {
      * @return its size in pixels
      */
     private static int sizeOf(String name) {
-        return name.equals("S") || name.equals("M") ? SIZE : SMALL_SIZE;
+        return name.equals("S") || name.startsWith("M") || name.startsWith(OBJ_PREFIX) ? SIZE : SMALL_SIZE;
     }
 
     /**
@@ -262,9 +327,11 @@ public final class Benchmark {
     static Scene buildScene(String name) {
         return switch (name) {
             case "S", "M", "SDOF", "SAA", "SAAA" -> buildScene(name.equals("M"));
+            case "M1" -> oneMesh();
+            case "MS" -> courseStyle();
             case "F2" -> forest();
             case "SG" -> glossyFloor();
-            default -> terrain(name, Integer.parseInt(name.substring(1).replace("k", "000").replace("M", "000000")));
+            default -> name.startsWith(OBJ_PREFIX) ? realMesh(name) : terrain(name, Integer.parseInt(name.substring(1).replace("k", "000").replace("M", "000000")));
         };
     }
 
@@ -276,9 +343,21 @@ public final class Benchmark {
      * @return the scene with them
      */
     private static Scene floorAndLight(String name, double lightEdge) {
+        return floorAndLight(name, lightEdge, new Point3D(0, 100, 0));
+    }
+
+    /**
+     * The floor, and a light of a given edge at a given centre.
+     *
+     * @param name      the scene's name
+     * @param lightEdge the edge of the light's square
+     * @param light     the light's centre
+     * @return the scene with them
+     */
+    private static Scene floorAndLight(String name, double lightEdge, Point3D light) {
         Scene scene = new Scene(name);
-        scene.geometries.add(new Plane(new Point3D(0, -50, 0), new Vector(0, 1, 0)).setMaterial(DIFFUSE));
-        scene.lights.add(new PointLight(new Color(255, 255, 255), new Point3D(0, 100, 0))
+        scene.geometries.add(new Plane(new Point3D(0, FLOOR_Y, 0), new Vector(0, 1, 0)).setMaterial(DIFFUSE));
+        scene.lights.add(new PointLight(new Color(255, 255, 255), light)
                 .setEdgesSize(lightEdge).setUV(new Vector(1, 0, 0), new Vector(0, 0, 1)));
         return scene;
     }
@@ -309,6 +388,81 @@ public final class Benchmark {
         return scene;
     }
 
+    /** {@return scene M1: M's triangles as one mesh} */
+    private static Scene oneMesh() {
+        Scene scene = floorAndLight("M1", LIGHT_EDGE);
+        List<TriangleMesh> meshes = sphereMeshes();
+        int vertices = 0;
+        int triangles = 0;
+        for (TriangleMesh mesh : meshes) {
+            vertices += mesh.getVerticesCount();
+            triangles += mesh.getTrianglesCount();
+        }
+        double[] coordinates = new double[3 * vertices];
+        int[] indices = new int[3 * triangles];
+        int v = 0;
+        int i = 0;
+        for (TriangleMesh mesh : meshes) {
+            for (int t = 0; t < mesh.getTrianglesCount(); ++t)
+                for (int k = 0; k < 3; ++k)
+                    indices[i++] = v + mesh.getVertexIndex(t, k);
+            for (int p = 0; p < mesh.getVerticesCount(); ++p, ++v) {
+                Point3D vertex = mesh.getVertex(p);
+                coordinates[3 * v] = vertex.getX();
+                coordinates[3 * v + 1] = vertex.getY();
+                coordinates[3 * v + 2] = vertex.getZ();
+            }
+        }
+        scene.geometries.add(new TriangleMesh(coordinates, indices).setMaterial(DIFFUSE));
+        System.out.printf("M1: M's %d triangles as one mesh%n", triangles);
+        return scene;
+    }
+
+    /** {@return scene MS: M's triangles as course-style {@link Triangle} objects} */
+    private static Scene courseStyle() {
+        Scene scene = floorAndLight("MS", LIGHT_EDGE);
+        int triangles = 0;
+        for (TriangleMesh mesh : sphereMeshes())
+            for (Triangle triangle : mesh.getTriangles()) {
+                scene.geometries.add(triangle.setMaterial(DIFFUSE));
+                ++triangles;
+            }
+        System.out.printf("MS: M's %d triangles as Triangle objects, a new render and ray tracer per frame%n",
+                triangles);
+        return scene;
+    }
+
+    /**
+     * Builds a real-mesh scene: an OBJ file's mesh standing on the floor, centred, its largest extent
+     * {@value #OBJ_EXTENT}, under a light of edge {@value #OBJ_LIGHT_EDGE}.
+     *
+     * @param name {@value #OBJ_PREFIX} and the file's path
+     * @return the scene
+     */
+    private static Scene realMesh(String name) {
+        Path file = Path.of(name.substring(OBJ_PREFIX.length()));
+        TriangleMesh raw = ObjMesh.readMesh(file);
+        double[] low = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY };
+        double[] high = { Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+        for (int v = 0; v < raw.getVerticesCount(); ++v) {
+            Point3D p = raw.getVertex(v);
+            double[] xyz = { p.getX(), p.getY(), p.getZ() };
+            for (int k = 0; k < 3; ++k) {
+                low[k] = Math.min(low[k], xyz[k]);
+                high[k] = Math.max(high[k], xyz[k]);
+            }
+        }
+        double extent = Math.max(high[0] - low[0], Math.max(high[1] - low[1], high[2] - low[2]));
+        double scale = OBJ_EXTENT / extent;
+        Point3D position = new Point3D(-scale * (low[0] + high[0]) / 2, FLOOR_Y - scale * low[1],
+                -scale * (low[2] + high[2]) / 2);
+        TriangleMesh mesh = ObjMesh.readMesh(file, scale, position);
+        Scene scene = floorAndLight(name, OBJ_LIGHT_EDGE, OBJ_LIGHT);
+        scene.geometries.add(mesh.setMaterial(DIFFUSE));
+        System.out.printf("%s: %d triangles, scaled by %.4g%n", name, mesh.getTrianglesCount(), scale);
+        return scene;
+    }
+
     /** {@return scene SG: scene S with a glossy floor} */
     private static Scene glossyFloor() {
         Scene scene = buildScene(false);
@@ -324,22 +478,28 @@ public final class Benchmark {
      */
     static Scene buildScene(boolean meshes) {
         Scene scene = floorAndLight(meshes ? "M" : "S", LIGHT_EDGE);
-        Point3D[] centers = { new Point3D(-40, -20, 0), new Point3D(30, -30, 20), new Point3D(5, -35, -50) };
-        double[] radii = { 30, 20, 15 };
         int triangles = 0;
-        for (int s = 0; s < centers.length; ++s) {
-            if (meshes) {
-                TriangleMesh mesh = SphereMesh.mesh(centers[s], radii[s], MESH_RINGS, MESH_SEGMENTS);
+        if (meshes)
+            for (TriangleMesh mesh : sphereMeshes()) {
                 scene.geometries.add(mesh.setMaterial(DIFFUSE));
                 triangles += mesh.getTrianglesCount();
-            } else
-                scene.geometries.add(new Sphere(centers[s], radii[s]).setMaterial(DIFFUSE));
-        }
+            }
+        else
+            for (int s = 0; s < CENTERS.length; ++s)
+                scene.geometries.add(new Sphere(CENTERS[s], RADII[s]).setMaterial(DIFFUSE));
         if (meshes)
             System.out.printf("M: %d spheres of %d rings x %d segments = %d triangles each, %d in all%n",
-                    centers.length, MESH_RINGS, MESH_SEGMENTS,
+                    CENTERS.length, MESH_RINGS, MESH_SEGMENTS,
                     SphereMesh.trianglesCount(MESH_RINGS, MESH_SEGMENTS), triangles);
         return scene;
+    }
+
+    /** {@return M's three sphere meshes} */
+    private static List<TriangleMesh> sphereMeshes() {
+        List<TriangleMesh> meshes = new ArrayList<>();
+        for (int s = 0; s < CENTERS.length; ++s)
+            meshes.add(SphereMesh.mesh(CENTERS[s], RADII[s], MESH_RINGS, MESH_SEGMENTS));
+        return meshes;
     }
 
     /**
@@ -395,7 +555,8 @@ public final class Benchmark {
      */
     private static <T> T usage(String problem) {
         System.err.println("benchmark: " + problem);
-        System.err.println("usage: Benchmark [--scene S|M|G10k|G100k|G1M|F2|SDOF|SAA|SAAA|SG|all, or several"
+        System.err.println("usage: Benchmark [--scene S|M|M1|MS|G10k|G100k|G1M|F2|SDOF|SAA|SAAA|SG|obj:PATH|all,"
+                + " or several"
                 + " separated by commas]"
                 + " [--frames N] [--warmup N] [--threads N]");
         System.exit(2);
