@@ -59,7 +59,7 @@ public class Cylinder extends Tube {
      * {@link primitives.Util#isZero}), so the radius taken is sqrt(radius² + 1e-10).
      */
     @Override
-    boolean bounds(double[] box, int b) {
+    public boolean bounds(double[] box, int b) {
         Point3D bottom = getAxisRay().getP0();
         Point3D top = getAxisRay().getPoint(height);
         Vector a = getAxisRay().getDir();

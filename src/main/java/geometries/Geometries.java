@@ -52,7 +52,7 @@ public class Geometries extends Intersectable {
      *
      * @return the version of the composite's contents
      */
-    long version() {
+    public long version() {
         long version = additions;
         for (Geometries composite : composites)
             version += composite.version();

@@ -1,5 +1,6 @@
 package geometries;
 
+import accel.ShadowFrustum;
 import java.util.List;
 
 import primitives.Color;
@@ -15,7 +16,7 @@ import static primitives.Util.requireNonNull;
  */
 public abstract class Geometry extends Intersectable {
     /** What {@link #nearestHit} returns when the ray misses. */
-    static final double NO_HIT = Double.POSITIVE_INFINITY;
+    public static final double NO_HIT = Double.POSITIVE_INFINITY;
 
     private Color emission = Color.BLACK;
     private Material material = new Material();
@@ -74,7 +75,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxT the largest distance that counts
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when there is none
      */
-    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         Point3D origin = new Point3D(ox, oy, oz);
         List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(origin, new Vector(dx, dy, dz)), maxT);
         double nearest = NO_HIT;
@@ -91,7 +92,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxT the largest distance that counts
      * @return true when t lies in (0, maxT]
      */
-    static boolean within(double t, double maxT) {
+    public static boolean within(double t, double maxT) {
         return t > 0 && t <= maxT;
     }
 
@@ -102,7 +103,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxT the largest distance that counts
      * @return t when it lies in (0, maxT], else {@link #NO_HIT}
      */
-    static double hitWithin(double t, double maxT) {
+    public static double hitWithin(double t, double maxT) {
         return within(t, maxT) ? t : NO_HIT;
     }
 
@@ -113,7 +114,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxDistance the largest distance that counts
      * @return the one intersection, or null
      */
-    final List<GeoPoint> singleHit(Ray ray, double maxDistance) {
+    public final List<GeoPoint> singleHit(Ray ray, double maxDistance) {
         Point3D p0 = ray.getP0();
         Vector dir = ray.getDir();
         double t = nearestHit(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), maxDistance);
@@ -129,7 +130,7 @@ public abstract class Geometry extends Intersectable {
      *             body was tested as a whole
      * @return the hit: the body and the point (the default ignores the part)
      */
-    GeoPoint hitPoint(Ray ray, double t, int part) {
+    public GeoPoint hitPoint(Ray ray, double t, int part) {
         return new GeoPoint(this, ray.getPoint(t));
     }
 
@@ -160,7 +161,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxT the largest distance that counts
      * @return the number of intersections at distances in (0, maxT]
      */
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz)), maxT);
         return hits == null ? 0 : hits.size();
     }
@@ -172,7 +173,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxT the largest distance that counts
      * @return the transparency factor in [0, 1]
      */
-    final double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public final double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         if (nearestHit(ox, oy, oz, dx, dy, dz, maxT) == NO_HIT) // most shadow rays miss: no material read
             return 1;
         double kT = material.getKt();
@@ -189,7 +190,7 @@ public abstract class Geometry extends Intersectable {
      * @param frustum the pyramid the bundle sweeps
      * @return false only when no ray of the bundle can meet the body
      */
-    boolean mayMeet(ShadowFrustum frustum) {
+    public boolean mayMeet(ShadowFrustum frustum) {
         return true;
     }
 
@@ -198,7 +199,7 @@ public abstract class Geometry extends Intersectable {
      *
      * @return {minX, minY, minZ, maxX, maxY, maxZ}, or null for an unbounded body
      */
-    final double[] bounds() {
+    public final double[] bounds() {
         double[] box = new double[6];
         return bounds(box, 0) ? box : null;
     }
@@ -211,7 +212,7 @@ public abstract class Geometry extends Intersectable {
      * @param b   where the box's six numbers go: {minX, minY, minZ, maxX, maxY, maxZ}
      * @return false for an unbounded body, when nothing is written
      */
-    boolean bounds(double[] box, int b) {
+    public boolean bounds(double[] box, int b) {
         return false;
     }
 }

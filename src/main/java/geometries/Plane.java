@@ -1,5 +1,6 @@
 package geometries;
 
+import accel.ShadowFrustum;
 import java.util.List;
 
 import primitives.Point3D;
@@ -93,7 +94,7 @@ public class Plane extends Geometry {
     }
 
     @Override
-    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         double nv = alignZero(nx * dx + ny * dy + nz * dz);
         double nq = nx * (qx - ox) + ny * (qy - oy) + nz * (qz - oz);
         // t = nq / nv lies in (0, maxT] only if nq has the sign of nv and |nq| <= maxT·|nv|: divide only then
@@ -103,12 +104,12 @@ public class Plane extends Geometry {
     }
 
     @Override
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 1 : 0;
     }
 
     @Override
-    boolean mayMeet(ShadowFrustum frustum) {
+    public boolean mayMeet(ShadowFrustum frustum) {
         return frustum.meetsPlane(nx, ny, nz, qx, qy, qz);
     }
 

@@ -1,5 +1,7 @@
 package geometries;
 
+import accel.ShadowFrustum;
+import accel.BoundingVolumeHierarchy;
 import java.util.List;
 
 import primitives.Point3D;
@@ -179,7 +181,7 @@ public class Polygon extends Geometry {
 
     /** The renderer's path: the polygon is closed, so a ray through an edge or a vertex hits. */
     @Override
-    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         return hitInside(ox, oy, oz, dx, dy, dz, maxT, -EDGE_TOLERANCE * size);
     }
 
@@ -211,7 +213,7 @@ public class Polygon extends Geometry {
     }
 
     @Override
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 1 : 0;
     }
 
@@ -222,7 +224,7 @@ public class Polygon extends Geometry {
      * out at sharp vertices.
      */
     @Override
-    boolean bounds(double[] box, int b) {
+    public boolean bounds(double[] box, int b) {
         for (int k = 0; k < 3; ++k) {
             box[b + k] = Double.POSITIVE_INFINITY;
             box[b + 3 + k] = Double.NEGATIVE_INFINITY;
@@ -248,7 +250,7 @@ public class Polygon extends Geometry {
 
     /** A polygon lies in its plane: it can meet a bundle only when its plane does. */
     @Override
-    boolean mayMeet(ShadowFrustum frustum) {
+    public boolean mayMeet(ShadowFrustum frustum) {
         return plane.mayMeet(frustum);
     }
 

@@ -73,7 +73,7 @@ public class Sphere extends Geometry {
     }
 
     @Override
-    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         double t1 = root(ox, oy, oz, dx, dy, dz, -1);
         if (t1 > 0)
             return hitWithin(t1, maxT);
@@ -83,13 +83,13 @@ public class Sphere extends Geometry {
     }
 
     @Override
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         return (within(root(ox, oy, oz, dx, dy, dz, -1), maxT) ? 1 : 0)
                 + (within(root(ox, oy, oz, dx, dy, dz, 1), maxT) ? 1 : 0);
     }
 
     @Override
-    boolean bounds(double[] box, int b) {
+    public boolean bounds(double[] box, int b) {
         box[b] = cx - radius;
         box[b + 1] = cy - radius;
         box[b + 2] = cz - radius;

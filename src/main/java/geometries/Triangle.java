@@ -1,5 +1,6 @@
 package geometries;
 
+import accel.ShadowFrustum;
 import primitives.Point3D;
 
 import static primitives.Util.alignZero;
@@ -13,7 +14,7 @@ import static primitives.Util.alignZero;
  */
 public class Triangle extends Polygon {
     /** Tolerance on the barycentric coordinates, so that neighbours sharing an edge leave no seam. */
-    static final double BARYCENTRIC_TOLERANCE = 1e-9;
+    public static final double BARYCENTRIC_TOLERANCE = 1e-9;
 
     /**
      * The data of the intersection test: the first vertex p1, the edges e1 = p2 − p1 and
@@ -55,17 +56,17 @@ public class Triangle extends Polygon {
      * @param e2z the second edge, z
      * @return the limit
      */
-    static double parallelLimit(double e1x, double e1y, double e1z, double e2x, double e2y, double e2z) {
+    public static double parallelLimit(double e1x, double e1y, double e1z, double e2x, double e2y, double e2z) {
         return 1e-12 * Math.sqrt((e1x * e1x + e1y * e1y + e1z * e1z) * (e2x * e2x + e2y * e2y + e2z * e2z));
     }
 
     @Override
-    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         return intersect(data, 0, ox, oy, oz, dx, dy, dz, maxT);
     }
 
     /** The number of doubles {@link #project} writes. */
-    static final int PROJECTION = 6;
+    public static final int PROJECTION = 6;
 
     /**
      * Projects a point onto a triangle's plane: the barycentric coordinates u (along e1) and v (along
@@ -78,7 +79,7 @@ public class Triangle extends Polygon {
      * @param z      the point, z
      * @param target where the {@value #PROJECTION} numbers go
      */
-    static void project(double[] data, double x, double y, double z, double[] target) {
+    public static void project(double[] data, double x, double y, double z, double[] target) {
         double e1x = data[3];
         double e1y = data[4];
         double e1z = data[5];
@@ -115,7 +116,7 @@ public class Triangle extends Polygon {
      * @param maxT   the largest distance that counts
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when the ray misses
      */
-    static double intersect(double[] data, int offset, double ox, double oy, double oz, double dx, double dy,
+    public static double intersect(double[] data, int offset, double ox, double oy, double oz, double dx, double dy,
                             double dz, double maxT) {
         return intersect(data[offset], data[offset + 1], data[offset + 2], data[offset + 3], data[offset + 4],
                 data[offset + 5], data[offset + 6], data[offset + 7], data[offset + 8], data[offset + 9],
@@ -135,7 +136,7 @@ public class Triangle extends Polygon {
      * @param maxT          the largest distance that counts
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when the ray misses
      */
-    static double intersect(double p1x, double p1y, double p1z, double e1x, double e1y, double e1z, double e2x,
+    public static double intersect(double p1x, double p1y, double p1z, double e1x, double e1y, double e1z, double e2x,
                             double e2y, double e2z, double parallelLimit, double ox, double oy, double oz,
                             double dx, double dy, double dz, double maxT) {
         double px = dy * e2z - dz * e2y;
@@ -165,7 +166,7 @@ public class Triangle extends Polygon {
      * behind the rays' starts ({@link ShadowFrustum#meetsTriangle}) and its plane meets the pyramid.
      */
     @Override
-    boolean mayMeet(ShadowFrustum frustum) {
+    public boolean mayMeet(ShadowFrustum frustum) {
         return frustum.meetsTriangle(vertexCoordinates, 0, 3, 6) && super.mayMeet(frustum);
     }
 
@@ -174,7 +175,7 @@ public class Triangle extends Polygon {
      * tolerance τ, whose corners are p + τ·((p − q) + (p − r)) for each vertex p and the other two q, r.
      */
     @Override
-    boolean bounds(double[] box, int b) {
+    public boolean bounds(double[] box, int b) {
         bounds(vertexCoordinates, 0, 3, 6, box, b);
         return true;
     }
@@ -190,7 +191,7 @@ public class Triangle extends Polygon {
      * @param box      the array
      * @param b        where the box's six numbers go: {minX, minY, minZ, maxX, maxY, maxZ}
      */
-    static void bounds(double[] vertices, int p1, int p2, int p3, double[] box, int b) {
+    public static void bounds(double[] vertices, int p1, int p2, int p3, double[] box, int b) {
         for (int k = 0; k < 3; ++k) {
             double a = vertices[p1 + k];
             double bk = vertices[p2 + k];

@@ -1,5 +1,8 @@
 package geometries;
 
+import accel.ShadowFrustum;
+import accel.InnerBall;
+import accel.BoundingVolumeHierarchy;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -27,7 +30,7 @@ import static primitives.Util.requireNonNull;
  */
 public final class TriangleMesh extends Geometry {
     /** The number of doubles of a triangle's data for {@link #triangleData}. */
-    static final int TRIANGLE_DATA = 10;
+    public static final int TRIANGLE_DATA = 10;
     /** The tolerance, relative to a triangle's longest edge, of a point on it (see {@link #getNormal(Point3D)}). */
     private static final double ON_TRIANGLE_TOLERANCE = 1e-9;
 
@@ -346,7 +349,7 @@ public final class TriangleMesh extends Geometry {
 
     /** The renderer's path for the whole mesh (outside a hierarchy): the nearest closed triangle hit. */
     @Override
-    double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         double nearest = NO_HIT;
         for (int t = 0; t < getTrianglesCount(); ++t)
             nearest = Math.min(nearest, triangleHit(t, ox, oy, oz, dx, dy, dz, maxT));
@@ -354,7 +357,7 @@ public final class TriangleMesh extends Geometry {
     }
 
     @Override
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         int count = 0;
         for (int t = 0; t < getTrianglesCount(); ++t)
             if (triangleHit(t, ox, oy, oz, dx, dy, dz, maxT) < NO_HIT)
@@ -370,7 +373,7 @@ public final class TriangleMesh extends Geometry {
      * @param maxT the largest distance that counts
      * @return the distance in (0, maxT], or {@link #NO_HIT}
      */
-    double triangleHit(int t, double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public double triangleHit(int t, double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         int a = corner(t, 0);
         int b = corner(t, 1);
         int c = corner(t, 2);
@@ -389,7 +392,7 @@ public final class TriangleMesh extends Geometry {
      * @param target the array
      * @param b      where the box's six numbers go
      */
-    void bounds(int t, double[] target, int b) {
+    public void bounds(int t, double[] target, int b) {
         Triangle.bounds(vertices, corner(t, 0), corner(t, 1), corner(t, 2), target, b);
     }
 
@@ -403,7 +406,7 @@ public final class TriangleMesh extends Geometry {
      * @param frustum the pyramid the bundle sweeps
      * @return false only when no ray of the bundle can meet the triangle
      */
-    boolean mayMeet(int t, ShadowFrustum frustum) {
+    public boolean mayMeet(int t, ShadowFrustum frustum) {
         int a = corner(t, 0);
         int b = corner(t, 1);
         int c = corner(t, 2);
@@ -433,7 +436,7 @@ public final class TriangleMesh extends Geometry {
      * @param target the array
      * @param offset where the {@value #TRIANGLE_DATA} numbers go
      */
-    void triangleData(int t, double[] target, int offset) {
+    public void triangleData(int t, double[] target, int offset) {
         int a = corner(t, 0);
         int b = corner(t, 1);
         int c = corner(t, 2);
@@ -446,7 +449,7 @@ public final class TriangleMesh extends Geometry {
     }
 
     /** {@return the triangles' vertex indices, three per triangle: the mesh's own array, not to be changed} */
-    int[] indices() {
+    public int[] indices() {
         return indices;
     }
 
@@ -456,7 +459,7 @@ public final class TriangleMesh extends Geometry {
     }
 
     @Override
-    boolean bounds(double[] target, int b) {
+    public boolean bounds(double[] target, int b) {
         System.arraycopy(box, 0, target, b, 6);
         return true;
     }
@@ -467,7 +470,7 @@ public final class TriangleMesh extends Geometry {
      *
      * @return the ball, or null when the mesh is open or no ball was found
      */
-    synchronized InnerBall innerBall() {
+    public synchronized InnerBall innerBall() {
         if (!innerBallSought) {
             innerBall = InnerBall.of(this);
             innerBallSought = true;
@@ -481,7 +484,7 @@ public final class TriangleMesh extends Geometry {
      * triangle the ray hits at that distance.
      */
     @Override
-    GeoPoint hitPoint(Ray ray, double t, int part) {
+    public GeoPoint hitPoint(Ray ray, double t, int part) {
         int triangle = part;
         if (triangle < 0) {
             Point3D p0 = ray.getP0();

@@ -9,7 +9,8 @@
  * <p>
  * Polygon edges follow two rules: the course's queries on a body take it as open (a ray through an edge
  * misses), the renderer's path takes it as closed, so meshes render without seams (see
- * {@link geometries.Polygon}). The renderer's path is the {@link geometries.BoundingVolumeHierarchy}, which
- * also traces the shadow rays of a soft shadow as one bundle inside a {@link geometries.ShadowFrustum}.
+ * {@link geometries.Polygon}). The renderer's path goes through the hierarchy of the {@link accel} package, which
+ * calls the bodies' public hooks of that path ({@code nearestHit}, {@code transmittance}, {@code bounds},
+ * {@code mayMeet}): they take a ray's numbers as primitive doubles and allocate nothing.
  */
 package geometries;

@@ -1,8 +1,8 @@
 package renderer;
 
-import geometries.BoundingVolumeHierarchy;
+import accel.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
-import geometries.ShadowFrustum;
+import accel.ShadowFrustum;
 import geometries.Triangle;
 import geometries.TriangleMesh;
 import lighting.AreaLightSource;
@@ -446,7 +446,7 @@ public class RayTracerBasic extends RayTracerBase {
         /**
          * Tells whether the lit point of the last {@link #setPoint} lies on a triangle (of a mesh, or a
          * {@link Triangle}). Only then is the surface around it set aside from the bundle's gather
-         * ({@link geometries.ShadowFrustum#setLeaving}): its neighbouring triangles are the bodies that
+         * ({@link accel.ShadowFrustum#setLeaving}): its neighbouring triangles are the bodies that
          * test serves, and the bundles of other points (a sphere's, a plane's) do without its cost.
          *
          * @param onTriangle whether the point lies on a triangle
@@ -485,7 +485,7 @@ public class RayTracerBasic extends RayTracerBase {
          * same side, they start at one point DELTA off the surface, the apex of their pyramid;
          * otherwise the pyramid starts at the point itself and is DELTA thick. For a point on a
          * triangle ({@link #setFacet}), the frustum is told the surface the rays leave, which lies
-         * behind their starts ({@link geometries.ShadowFrustum#setLeaving}).
+         * behind their starts ({@link accel.ShadowFrustum#setLeaving}).
          *
          * @return how the bundle's rays are to be traced
          */

@@ -2,7 +2,7 @@ package renderer;
 
 import java.util.Arrays;
 
-import geometries.BoundingVolumeHierarchy;
+import accel.BoundingVolumeHierarchy;
 import primitives.Color;
 
 /**

@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
-import geometries.BoundingVolumeHierarchy;
+import accel.BoundingVolumeHierarchy;
 import geometries.Geometry;
 import geometries.Plane;
 import geometries.Sphere;
@@ -24,6 +24,7 @@ import renderer.RayTracerBasic;
 import renderer.Render;
 import scene.Scene;
 import scenefile.ObjMesh;
+import testutil.TestMeshes;
 
 /**
  * The project's speed benchmark (SPEC §8). It renders the reference scenes: S (three spheres on a
@@ -391,30 +392,9 @@ public final class Benchmark {
     /** {@return scene M1: M's triangles as one mesh} */
     private static Scene oneMesh() {
         Scene scene = floorAndLight("M1", LIGHT_EDGE);
-        List<TriangleMesh> meshes = sphereMeshes();
-        int vertices = 0;
-        int triangles = 0;
-        for (TriangleMesh mesh : meshes) {
-            vertices += mesh.getVerticesCount();
-            triangles += mesh.getTrianglesCount();
-        }
-        double[] coordinates = new double[3 * vertices];
-        int[] indices = new int[3 * triangles];
-        int v = 0;
-        int i = 0;
-        for (TriangleMesh mesh : meshes) {
-            for (int t = 0; t < mesh.getTrianglesCount(); ++t)
-                for (int k = 0; k < 3; ++k)
-                    indices[i++] = v + mesh.getVertexIndex(t, k);
-            for (int p = 0; p < mesh.getVerticesCount(); ++p, ++v) {
-                Point3D vertex = mesh.getVertex(p);
-                coordinates[3 * v] = vertex.getX();
-                coordinates[3 * v + 1] = vertex.getY();
-                coordinates[3 * v + 2] = vertex.getZ();
-            }
-        }
-        scene.geometries.add(new TriangleMesh(coordinates, indices).setMaterial(DIFFUSE));
-        System.out.printf("M1: M's %d triangles as one mesh%n", triangles);
+        TriangleMesh mesh = TestMeshes.merge(sphereMeshes().toArray(TriangleMesh[]::new));
+        scene.geometries.add(mesh.setMaterial(DIFFUSE));
+        System.out.printf("M1: M's %d triangles as one mesh%n", mesh.getTrianglesCount());
         return scene;
     }
 

@@ -16,7 +16,7 @@ import java.util.Set;
 
 import org.junit.jupiter.api.Test;
 
-import geometries.BoundingVolumeHierarchy;
+import accel.BoundingVolumeHierarchy;
 import geometries.Geometries;
 import geometries.Intersectable.GeoPoint;
 import geometries.Triangle;

@@ -1,5 +1,6 @@
 package geometries;
 
+import accel.ShadowFrustum;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;

@@ -1,5 +1,7 @@
 package geometries;
 
+import accel.ShadowFrustum;
+import accel.BoundingVolumeHierarchy;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

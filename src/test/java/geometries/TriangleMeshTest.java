@@ -1,5 +1,9 @@
 package geometries;
 
+import testutil.TestMeshes;
+import accel.ShadowFrustum;
+import accel.InnerBall;
+import accel.BoundingVolumeHierarchy;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -20,7 +24,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.function.Executable;
 
-import geometries.BoundingVolumeHierarchy.Query;
+import accel.BoundingVolumeHierarchy.Query;
 import geometries.Intersectable.GeoPoint;
 import geometries.TriangleMesh.MeshPoint;
 import lighting.PointLight;
@@ -420,7 +424,7 @@ class TriangleMeshTest {
 
         // ===== Boundary Values Tests =====
         // TC11: a closed mesh with no inner ball (two unit cubes 10 apart): null, kept
-        TriangleMesh apart = InnerBallTest.merge(InnerBallTest.cube(0, 0, 0, 1), InnerBallTest.cube(10, 0, 0, 1));
+        TriangleMesh apart = TestMeshes.merge(TestMeshes.cube(0, 0, 0, 1), TestMeshes.cube(10, 0, 0, 1));
         assertNull(apart.innerBall(), "TC11: two cubes apart have no inner ball");
         assertNull(apart.innerBall(), "TC11: two cubes apart have no inner ball on the next call either");
     }

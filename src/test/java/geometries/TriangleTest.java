@@ -1,5 +1,7 @@
 package geometries;
 
+import accel.ShadowFrustum;
+import accel.BoundingVolumeHierarchy;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -15,7 +17,7 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
-import geometries.BoundingVolumeHierarchy.Query;
+import accel.BoundingVolumeHierarchy.Query;
 import geometries.Intersectable.GeoPoint;
 import primitives.Point3D;
 import primitives.Ray;

@@ -18,7 +18,7 @@ import java.util.function.DoubleFunction;
 
 import org.junit.jupiter.api.Test;
 
-import geometries.BoundingVolumeHierarchy;
+import accel.BoundingVolumeHierarchy;
 import geometries.Geometries;
 import geometries.Geometry;
 import geometries.Intersectable.GeoPoint;

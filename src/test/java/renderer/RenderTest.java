@@ -17,7 +17,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.Test;
 
-import geometries.BoundingVolumeHierarchy;
+import accel.BoundingVolumeHierarchy;
 import geometries.Geometries;
 import geometries.Plane;
 import geometries.Polygon;

@@ -1,5 +1,8 @@
-package geometries;
+package accel;
 
+import geometries.TriangleMesh;
+import geometries.Triangle;
+import geometries.Geometry;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -13,6 +16,9 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 import primitives.Point3D;
+import static testutil.TestMeshes.cube;
+import static testutil.TestMeshes.cubeFaces;
+import static testutil.TestMeshes.merge;
 import primitives.Vector;
 
 /**
@@ -34,32 +40,6 @@ class InnerBallTest {
     private static final int[] TETRAHEDRON_FACES = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
 
     /**
-     * An axis-aligned cube of 12 triangles over 8 shared vertices, vertex i at the corner whose bits
-     * 1, 2 and 4 of i choose the high x, y and z.
-     *
-     * @param x0   the low corner, x
-     * @param y0   the low corner, y
-     * @param z0   the low corner, z
-     * @param side the edge's length
-     * @return the mesh
-     */
-    static TriangleMesh cube(double x0, double y0, double z0, double side) {
-        double[] vertices = new double[24];
-        for (int i = 0; i < 8; ++i) {
-            vertices[3 * i] = x0 + (i & 1) * side;
-            vertices[3 * i + 1] = y0 + (i >> 1 & 1) * side;
-            vertices[3 * i + 2] = z0 + (i >> 2 & 1) * side;
-        }
-        return new TriangleMesh(vertices, cubeFaces());
-    }
-
-    /** {@return the 12 triangles of {@link #cube}'s six faces, by vertex index} */
-    private static int[] cubeFaces() {
-        return new int[] { 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2,
-                1, 3, 7, 1, 7, 5 };
-    }
-
-    /**
      * The inner ball of a cube centred on a point: centred there, its radius a little below half the side.
      *
      * @param centre the cube's centre
@@ -70,33 +50,6 @@ class InnerBallTest {
         InnerBall ball = InnerBall.of(cube(centre.getX() - half, centre.getY() - half, centre.getZ() - half, 2 * half));
         assertNotNull(ball, "a cube must have an inner ball");
         return ball;
-    }
-
-    /**
-     * One mesh of the triangles of several, each keeping its own vertices.
-     *
-     * @param meshes the meshes
-     * @return the mesh of all their triangles
-     */
-    static TriangleMesh merge(TriangleMesh... meshes) {
-        int vertexCount = 0;
-        int triangleCount = 0;
-        for (TriangleMesh mesh : meshes) {
-            vertexCount += mesh.getVerticesCount();
-            triangleCount += mesh.getTrianglesCount();
-        }
-        double[] vertices = new double[3 * vertexCount];
-        int[] indices = new int[3 * triangleCount];
-        int v = 0;
-        int i = 0;
-        for (TriangleMesh mesh : meshes) {
-            for (int t = 0; t < mesh.getTrianglesCount(); ++t)
-                for (int k = 0; k < 3; ++k)
-                    indices[i++] = v + mesh.getVertexIndex(t, k);
-            for (int m = 0; m < mesh.getVerticesCount(); ++m, ++v)
-                setVertex(vertices, v, mesh.getVertex(m));
-        }
-        return new TriangleMesh(vertices, indices);
     }
 
     /**

@@ -1,5 +1,7 @@
-package geometries;
+package accel;
 
+import geometries.TriangleMesh;
+import geometries.Triangle;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -19,7 +21,7 @@ import java.util.List;
  * parity of the crossings of three rays from it, each of which must be sure (no crossing near an edge
  * or along a triangle) and odd.
  */
-final class InnerBall {
+public final class InnerBall {
     /** The part of the distance to the nearest triangle kept off the radius, for rounding. */
     private static final double SHRINK = 1e-6;
     /** The part of the mesh's largest coordinate kept off the radius too, for rounding. */
@@ -37,11 +39,11 @@ final class InnerBall {
     private static final int UNSURE = -1;
 
     /** The centre. */
-    final double cx;
-    final double cy;
-    final double cz;
+    public final double cx;
+    public final double cy;
+    public final double cz;
     /** The radius, positive. */
-    final double radius;
+    public final double radius;
     /** The box around the ball. */
     private final double[] box;
 
@@ -88,7 +90,7 @@ final class InnerBall {
      * @param mesh the mesh
      * @return the ball, or null when the mesh is not closed or neither centre is surely inside it
      */
-    static InnerBall of(TriangleMesh mesh) {
+    public static InnerBall of(TriangleMesh mesh) {
         if (!isClosed(mesh))
             return null;
         double[] data = new double[TriangleMesh.TRIANGLE_DATA];

@@ -1,5 +1,10 @@
-package geometries;
+package accel;
 
+import geometries.TriangleMesh;
+import geometries.Triangle;
+import geometries.Intersectable;
+import geometries.Geometry;
+import geometries.Geometries;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -55,7 +60,7 @@ public final class BoundingVolumeHierarchy {
     private static final double[] EMPTY_BOX = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
     /** What {@link #slabEntry} answers for a ray that misses the box: no entry distance is negative. */
-    static final double MISSED = -1;
+    public static final double MISSED = -1;
     /** The most bodies of the tree a bundle of shadow rays is tested against one by one. */
     private static final int MAX_GATHERED = 32;
     /** The places of all gathered bodies, in order. */
@@ -1250,7 +1255,7 @@ public final class BoundingVolumeHierarchy {
      * @param maxT the largest distance that counts
      * @return the distance (0 or more) where the ray enters the box, or {@link #MISSED}
      */
-    static double slabEntry(double x0, double y0, double z0, double x1, double y1, double z1, double ox,
+    public static double slabEntry(double x0, double y0, double z0, double x1, double y1, double z1, double ox,
                                     double oy, double oz, double ix, double iy, double iz, double maxT) {
         double near = ((ix < 0 ? x1 : x0) - ox) * ix;
         double far = ((ix < 0 ? x0 : x1) - ox) * ix;

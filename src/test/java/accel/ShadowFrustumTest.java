@@ -1,5 +1,7 @@
-package geometries;
+package accel;
 
+import geometries.Triangle;
+import geometries.Geometry;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;

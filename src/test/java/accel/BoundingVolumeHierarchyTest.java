@@ -1,5 +1,15 @@
-package geometries;
+package accel;
 
+import geometries.Tube;
+import geometries.TriangleMesh;
+import geometries.Triangle;
+import geometries.Sphere;
+import geometries.Polygon;
+import geometries.Plane;
+import geometries.Intersectable;
+import geometries.Geometry;
+import geometries.Geometries;
+import geometries.Cylinder;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -21,7 +31,7 @@ import java.util.function.Supplier;
 
 import org.junit.jupiter.api.Test;
 
-import geometries.BoundingVolumeHierarchy.Query;
+import accel.BoundingVolumeHierarchy.Query;
 import geometries.Intersectable.GeoPoint;
 import primitives.Material;
 import primitives.Point3D;
@@ -1177,7 +1187,7 @@ class BoundingVolumeHierarchyTest {
         }
 
         @Override
-        double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
             return NO_HIT;
         }
     }

@@ -1,5 +1,7 @@
-package geometries;
+package accel;
 
+import geometries.Triangle;
+import geometries.Plane;
 /**
  * The pyramid a bundle of shadow rays sweeps: every ray leaves one origin (the apex) and ends on a
  * parallelogram (a light's square, the base). A box or a plane that the pyramid does not meet meets

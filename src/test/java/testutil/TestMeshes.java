@@ -1,0 +1,68 @@
+package testutil;
+
+import geometries.TriangleMesh;
+import primitives.Point3D;
+
+/** Small triangle meshes shared by the tests and the benchmark: a cube, and one mesh of several. */
+public final class TestMeshes {
+    /** Not instantiable. */
+    private TestMeshes() {
+    }
+
+    /**
+     * An axis-aligned cube of 12 triangles over 8 shared vertices, vertex i at the corner whose bits
+     * 1, 2 and 4 of i choose the high x, y and z.
+     *
+     * @param x0   the low corner, x
+     * @param y0   the low corner, y
+     * @param z0   the low corner, z
+     * @param side the edge's length
+     * @return the mesh
+     */
+    public static TriangleMesh cube(double x0, double y0, double z0, double side) {
+        double[] vertices = new double[24];
+        for (int i = 0; i < 8; ++i) {
+            vertices[3 * i] = x0 + (i & 1) * side;
+            vertices[3 * i + 1] = y0 + (i >> 1 & 1) * side;
+            vertices[3 * i + 2] = z0 + (i >> 2 & 1) * side;
+        }
+        return new TriangleMesh(vertices, cubeFaces());
+    }
+
+    /** {@return the 12 triangles of {@link #cube}'s six faces, by vertex index} */
+    public static int[] cubeFaces() {
+        return new int[] { 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2,
+                1, 3, 7, 1, 7, 5 };
+    }
+
+    /**
+     * One mesh of the triangles of several, each keeping its own vertices.
+     *
+     * @param meshes the meshes
+     * @return the mesh of all their triangles
+     */
+    public static TriangleMesh merge(TriangleMesh... meshes) {
+        int vertexCount = 0;
+        int triangleCount = 0;
+        for (TriangleMesh mesh : meshes) {
+            vertexCount += mesh.getVerticesCount();
+            triangleCount += mesh.getTrianglesCount();
+        }
+        double[] vertices = new double[3 * vertexCount];
+        int[] indices = new int[3 * triangleCount];
+        int v = 0;
+        int i = 0;
+        for (TriangleMesh mesh : meshes) {
+            for (int t = 0; t < mesh.getTrianglesCount(); ++t)
+                for (int k = 0; k < 3; ++k)
+                    indices[i++] = v + mesh.getVertexIndex(t, k);
+            for (int m = 0; m < mesh.getVerticesCount(); ++m, ++v) {
+                Point3D point = mesh.getVertex(m);
+                vertices[3 * v] = point.getX();
+                vertices[3 * v + 1] = point.getY();
+                vertices[3 * v + 2] = point.getZ();
+            }
+        }
+        return new TriangleMesh(vertices, indices);
+    }
+}
