@@ -38,7 +38,7 @@ final class ThreadState {
     /** The pixel a lattice point's colour belongs to: its entry is current when it equals {@link #latticePixel}. */
     private int[] latticeStamps = new int[0];
     private int latticePixel;
-    private final RayTracerBasic.LightSquare lightSquare = new RayTracerBasic.LightSquare();
+    private final LightSquare lightSquare = new LightSquare();
 
     /**
      * Creates the state of a thread.
@@ -140,7 +140,7 @@ final class ThreadState {
     }
 
     /** {@return this thread's light square, set again for every lit point: the shadow path allocates nothing} */
-    RayTracerBasic.LightSquare lightSquare() {
+    LightSquare lightSquare() {
         return lightSquare;
     }
 

@@ -120,7 +120,7 @@ class ThreadStateTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: the same light square on every call
-        RayTracerBasic.LightSquare square = state.lightSquare();
+        LightSquare square = state.lightSquare();
         assertNotNull(square, "TC01: a state must have a light square");
         assertSame(square, state.lightSquare(), "TC01: the light square must be reused");
 

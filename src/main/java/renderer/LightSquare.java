@@ -1,0 +1,324 @@
+package renderer;
+
+import accel.BoundingVolumeHierarchy;
+import accel.ShadowFrustum;
+import geometries.Triangle;
+import lighting.AreaLightSource;
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
+import static primitives.Util.alignZero;
+
+/**
+ * A light's square as seen from a lit point, in raw doubles: shadow rays to its sample points are
+ * traced without allocating anything. Each rendering thread keeps one ({@link ThreadState}) and
+ * sets it again for every lit point and light. The rays are traced as one bundle: the bodies
+ * that may block any of them are gathered once, by the pyramid from the point to the square, and
+ * the rays are tested against those alone (together, as a packet, when a subtree of many was
+ * kept); when none may, no ray needs testing.
+ */
+final class LightSquare {
+    /**
+     * How far, relative to the reach of the square, the square must lie off the point's tangent
+     * plane for all its rays to leave the surface on the same side.
+     */
+    private static final double SIDE_MARGIN = 1e-6;
+
+    /** How the rays of a bundle are traced. */
+    private enum Bundle {
+        /** Nothing can block any of them: each lets all the light through, untested. */
+        OPEN,
+        /** A closed opaque mesh lies across every one of them: each is blocked, untested. */
+        BLOCKED,
+        /** Each is tested against the few bodies gathered for the bundle. */
+        GATHERED,
+        /** The bundle kept a subtree: its rays walk it together, as a packet. */
+        PACKET,
+        /** The bundle's pyramid is flat, or there is no square: each walks the whole hierarchy. */
+        WHOLE
+    }
+
+    private double cx;
+    private double cy;
+    private double cz;
+    private double ux;
+    private double uy;
+    private double uz;
+    private double vx;
+    private double vy;
+    private double vz;
+    private double edges;
+    /** The lit point. */
+    private Point3D point;
+    private double px;
+    private double py;
+    private double pz;
+    /** The normal scaled to the length DELTA: how far a shadow ray's head moves off the surface. */
+    private double nx;
+    private double ny;
+    private double nz;
+    /** The ray to the light itself (or the centre of its square): its head, moved off the surface, and unit direction. */
+    private double centreOx;
+    private double centreOy;
+    private double centreOz;
+    private double centreDx;
+    private double centreDy;
+    private double centreDz;
+    private BoundingVolumeHierarchy bvh;
+    private BoundingVolumeHierarchy.Query query;
+    private Bundle bundle = Bundle.WHOLE;
+    /** Whether the lit point lies on a triangle (of a mesh, or a {@link Triangle}): see {@link #setFacet}. */
+    private boolean facet;
+
+    /**
+     * Sets the lit point and the ray from it to the light (to the centre of the light's square),
+     * the same ray as {@link Ray#Ray(Point3D, Vector, Vector)} makes from the point toward −l.
+     * No square is set: until {@link #setSquare}, rays walk the whole hierarchy; the point is not
+     * taken to lie on a triangle until {@link #setFacet} says so.
+     *
+     * @param p     the lit point
+     * @param n     the surface normal at the point
+     * @param l     the unit direction from the light to the point
+     * @param bvh   the hierarchy of the scene
+     * @param query the calling thread's scratch space for it
+     * @return this light square
+     */
+    LightSquare setPoint(Point3D p, Vector n, Vector l, BoundingVolumeHierarchy bvh,
+                         BoundingVolumeHierarchy.Query query) {
+        double normalX = n.getX();
+        double normalY = n.getY();
+        double normalZ = n.getZ();
+        double normalLength = n.length();
+        double delta = Ray.DELTA / normalLength;
+        this.point = p;
+        this.px = p.getX();
+        this.py = p.getY();
+        this.pz = p.getZ();
+        this.nx = normalX * delta;
+        this.ny = normalY * delta;
+        this.nz = normalZ * delta;
+        this.bvh = bvh;
+        this.query = query;
+        this.bundle = Bundle.WHOLE;
+        this.facet = false;
+        double dirX = -l.getX();
+        double dirY = -l.getY();
+        double dirZ = -l.getZ();
+        double side = alignZero(normalX * dirX + normalY * dirY + normalZ * dirZ);
+        double move = side == 0 ? 0 : (side > 0 ? Ray.DELTA : -Ray.DELTA) / normalLength;
+        this.centreOx = side == 0 ? px : px + normalX * move;
+        this.centreOy = side == 0 ? py : py + normalY * move;
+        this.centreOz = side == 0 ? pz : pz + normalZ * move;
+        // l is a unit vector already: normalising again, as the ray does, moves at most its last bits
+        double length = Math.sqrt(dirX * dirX + dirY * dirY + dirZ * dirZ);
+        this.centreDx = dirX / length;
+        this.centreDy = dirY / length;
+        this.centreDz = dirZ / length;
+        return this;
+    }
+
+    /**
+     * Tells whether the lit point of the last {@link #setPoint} lies on a triangle (of a mesh, or a
+     * {@link Triangle}). Only then is the surface around it set aside from the bundle's gather
+     * ({@link accel.ShadowFrustum#setLeaving}): its neighbouring triangles are the bodies that
+     * test serves, and the bundles of other points (a sphere's, a plane's) do without its cost.
+     *
+     * @param onTriangle whether the point lies on a triangle
+     * @return this light square
+     */
+    LightSquare setFacet(boolean onTriangle) {
+        this.facet = onTriangle;
+        return this;
+    }
+
+    /**
+     * Sets the light's square, seen from the point of the last {@link #setPoint}, and gathers
+     * the bodies its bundle of rays may meet.
+     *
+     * @param light the light
+     */
+    void setSquare(AreaLightSource light) {
+        Point3D center = light.getCenter();
+        Vector u = light.getU(point);
+        Vector v = light.getV(point);
+        this.cx = center.getX();
+        this.cy = center.getY();
+        this.cz = center.getZ();
+        this.ux = u.getX();
+        this.uy = u.getY();
+        this.uz = u.getZ();
+        this.vx = v.getX();
+        this.vy = v.getY();
+        this.vz = v.getZ();
+        this.edges = light.getEdges();
+        this.bundle = gather();
+    }
+
+    /**
+     * Gathers the bodies the bundle's rays may meet. When all the rays leave the surface on the
+     * same side, they start at one point DELTA off the surface, the apex of their pyramid;
+     * otherwise the pyramid starts at the point itself and is DELTA thick. For a point on a
+     * triangle ({@link #setFacet}), the frustum is told the surface the rays leave, which lies
+     * behind their starts ({@link accel.ShadowFrustum#setLeaving}).
+     *
+     * @return how the bundle's rays are to be traced
+     */
+    private Bundle gather() {
+        double half = edges / 2;
+        double ax = ux * half;
+        double ay = uy * half;
+        double az = uz * half;
+        double bx = vx * half;
+        double by = vy * half;
+        double bz = vz * half;
+        double wx = cx - px;
+        double wy = cy - py;
+        double wz = cz - pz;
+        // how far the centre and the corners c ± a ± b lie off the tangent plane, times DELTA
+        double centre = nx * wx + ny * wy + nz * wz;
+        double spread = Math.abs(nx * ax + ny * ay + nz * az) + Math.abs(nx * bx + ny * by + nz * bz);
+        double margin = SIDE_MARGIN * Ray.DELTA * (Math.sqrt(wx * wx + wy * wy + wz * wz) + edges);
+        double side = centre - spread > margin ? 1 : centre + spread < -margin ? -1 : 0;
+        double thickness = side == 0 ? Ray.DELTA : 0;
+        ShadowFrustum frustum = query.getFrustum();
+        if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
+                cz + side * nz, ax, ay, az, bx, by, bz, thickness))
+            return Bundle.WHOLE;
+        if (facet)
+            frustum.setLeaving((int) side, px, py, pz, nx, ny, nz);
+        if (!bvh.gather(query))
+            return Bundle.OPEN;
+        if (bvh.blocksBundle(query))
+            return Bundle.BLOCKED;
+        return query.isSubtreeGathered() ? Bundle.PACKET : Bundle.GATHERED;
+    }
+
+    /** {@return true when no ray of the bundle can be blocked: each lets all the light through} */
+    boolean isOpen() {
+        return bundle == Bundle.OPEN;
+    }
+
+    /** {@return true when every ray of the bundle is blocked by a closed opaque mesh} */
+    boolean isBlocked() {
+        return bundle == Bundle.BLOCKED;
+    }
+
+    /** {@return true when the bundle's rays need no tracing: it is open, or blocked} */
+    boolean isSettled() {
+        return isOpen() || isBlocked();
+    }
+
+    /** {@return the summed transparency of some rays of a settled bundle: 1 each when open, else 0} */
+    private double settled(int rays) {
+        return isOpen() ? rays : 0;
+    }
+
+    /**
+     * The transparency along the ray to the light (or to the centre of its square), traced alone.
+     *
+     * @param distance the distance from the point to the light (or the centre of its square)
+     * @return the transparency in [0, 1]
+     */
+    double visibility(double distance) {
+        if (isSettled())
+            return settled(1);
+        return transmittance(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
+    }
+
+    /** The transparency along one ray of the bundle, traced alone. */
+    private double transmittance(double ox, double oy, double oz, double dx, double dy, double dz,
+                                 double distance) {
+        return bundle == Bundle.WHOLE
+                ? bvh.transmittance(ox, oy, oz, dx, dy, dz, distance, RayTracerBasic.MIN_CALC_COLOR_K, query)
+                : bvh.gatheredTransmittance(ox, oy, oz, dx, dy, dz, distance, RayTracerBasic.MIN_CALC_COLOR_K, query);
+    }
+
+    /**
+     * The transparency along the ray to the centre of the square plus the summed transparency
+     * of the rays to the first sample points: all traced as one packet when the bundle kept a
+     * subtree, else one by one.
+     *
+     * @param distance the distance from the point to the centre of the square
+     * @param samples  sample points in the unit square, as a {@link JitteredGrid} draws them
+     * @param to       one past the last sample point
+     * @return the centre's transparency plus the sum of the others'
+     */
+    double visibility(double distance, double[] samples, int to) {
+        if (isSettled())
+            return settled(1 + to);
+        if (bundle != Bundle.PACKET)
+            return visibility(distance) + traceSamples(samples, 0, to);
+        query.clearPacket();
+        query.addToPacket(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
+        traceSamples(samples, 0, to);
+        double samplesKtr = tracePacket(1);
+        return query.getTransmittance(0) + samplesKtr;
+    }
+
+    /**
+     * The summed transparency of the shadow rays to some of the sample points: traced as one
+     * packet when the bundle kept a subtree, else one by one.
+     *
+     * @param samples sample points in the unit square, as a {@link JitteredGrid} draws them
+     * @param from    the first sample point
+     * @param to      one past the last sample point
+     * @return the sum of the rays' transparencies
+     */
+    double visibility(double[] samples, int from, int to) {
+        if (isSettled())
+            return settled(to - from);
+        if (bundle != Bundle.PACKET)
+            return traceSamples(samples, from, to);
+        query.clearPacket();
+        traceSamples(samples, from, to);
+        return tracePacket(0);
+    }
+
+    /**
+     * Traces the shadow rays to some of the sample points one by one, or for a packet, adds them
+     * to the query's packet. Like {@link Ray#Ray(Point3D, Vector, Vector)}, each ray starts DELTA
+     * off the surface on the side it leaves to.
+     *
+     * @return the sum of the rays' transparencies (0 for a packet, not traced yet)
+     */
+    private double traceSamples(double[] samples, int from, int to) {
+        double ktr = 0;
+        for (int s = from; s < to; ++s) {
+            double du = (0.5 - samples[2 * s]) * edges;
+            double dv = (0.5 - samples[2 * s + 1]) * edges;
+            double dx = cx + ux * du + vx * dv - px;
+            double dy = cy + uy * du + vy * dv - py;
+            double dz = cz + uz * du + vz * dv - pz;
+            double distance = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            double inverse = 1 / distance;
+            dx *= inverse;
+            dy *= inverse;
+            dz *= inverse;
+            double side = alignZero(nx * dx + ny * dy + nz * dz);
+            double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
+            double ox = px + offset * nx;
+            double oy = py + offset * ny;
+            double oz = pz + offset * nz;
+            if (bundle == Bundle.PACKET)
+                query.addToPacket(ox, oy, oz, dx, dy, dz, distance);
+            else
+                ktr += transmittance(ox, oy, oz, dx, dy, dz, distance);
+        }
+        return ktr;
+    }
+
+    /**
+     * Traces the rays of the query's packet together, through the subtree the bundle kept.
+     *
+     * @param from the first ray whose answer counts
+     * @return the sum of the answers of the rays from that one on
+     */
+    private double tracePacket(int from) {
+        bvh.gatheredTransmittances(RayTracerBasic.MIN_CALC_COLOR_K, query);
+        double ktr = 0;
+        for (int r = from; r < query.getPacketSize(); ++r)
+            ktr += query.getTransmittance(r);
+        return ktr;
+    }
+}
