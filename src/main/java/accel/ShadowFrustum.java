@@ -17,19 +17,19 @@ import geometries.Plane;
  * <p>
  * The surface the rays leave lies around the apex, where no face of the pyramid sets it aside: a
  * back face ({@link #setBackFace}) does when every ray leaves the surface on one side, and the rays'
- * two starts ({@link #setStarts}) do when they leave it on both sides.
+ * two ray origins ({@link #setOrigins}) do when they leave it on both sides.
  * <p>
  * A closed mesh's inner ball that the pyramid passes through, on its way to a base outside the
- * mesh's box, lies across every ray ({@link #crossesSolid}): the mesh blocks the whole bundle.
+ * mesh's box, lies across every ray ({@link #crossesClosedMesh}): the mesh blocks the whole bundle.
  */
 public final class ShadowFrustum {
     /** How far outside, relative to the pyramid's size, a box or plane must be to be set aside. */
     private static final double MARGIN = 1e-7;
     /** How near, relative to the pyramid's size, an inner point may come to a face before the pyramid counts as flat. */
     private static final double FLAT = 1e-9;
-    /** What {@link #startOf} answers for a ray that starts at p + n and leaves to n's side. */
+    /** What {@link #originOf} answers for a ray that starts at p + n and leaves to n's side. */
     static final int ABOVE = 1;
-    /** What {@link #startOf} answers for a ray that starts at p − n and leaves to the other side. */
+    /** What {@link #originOf} answers for a ray that starts at p − n and leaves to the other side. */
     static final int BELOW = 2;
     /** The pyramid's faces: four sides and the base. */
     private static final int PLANES = 5;
@@ -55,15 +55,15 @@ public final class ShadowFrustum {
     private final double[] hull = new double[6];
     /** The thickness plus the margin: how far outside a face a box or plane must be. */
     private double margin;
-    /** The margin alone, for rounding: how far behind a ray's start a triangle must be ({@link #startsBehind}). */
+    /** The margin alone, for rounding: how far behind a ray's origin a triangle must be ({@link #originsBehind}). */
     private double rounding;
-    /** Whether {@link #setStarts} was called since the last {@link #set}, and the point p and offset n it was given. */
-    private boolean startsSet;
-    /** Whether {@link #behindStarts} has set a triangle aside since the starts were set. */
-    private boolean leftBehindStarts;
-    private double startX;
-    private double startY;
-    private double startZ;
+    /** Whether {@link #setOrigins} was called since the last {@link #set}, and the point p and offset n it was given. */
+    private boolean originsSet;
+    /** Whether {@link #behindOrigins} has set a triangle aside since the ray origins were set. */
+    private boolean leftBehindOrigins;
+    private double originX;
+    private double originY;
+    private double originZ;
     private double offsetX;
     private double offsetY;
     private double offsetZ;
@@ -108,8 +108,8 @@ public final class ShadowFrustum {
         double size = setHull();
         rounding = MARGIN * size;
         margin = rounding + thickness;
-        startsSet = false;
-        leftBehindStarts = false;
+        originsSet = false;
+        leftBehindOrigins = false;
         flatness = FLAT * size;
         valid = false;
         for (int side = 0; side < 4; ++side)
@@ -246,17 +246,17 @@ public final class ShadowFrustum {
     }
 
     /**
-     * Tells the pyramid the surface a bundle of shadow rays leaves, as a renderer moves their starts
+     * Tells the pyramid the surface a bundle of shadow rays leaves, as a renderer moves their origins
      * off it: by a vector n on the side each ray leaves to. When all the rays leave to one side, they
      * start at the apex and the back face across n (or −n) is asked for ({@link #setBackFace}); when
-     * they leave to both, the starts are set ({@link #setStarts}).
+     * they leave to both, the ray origins are set ({@link #setOrigins}).
      *
      * @param side 1 when every ray leaves to n's side, −1 when every ray leaves to the other, 0 when
      *             they leave to both
      * @param px   the point p the rays leave, x
      * @param py   the same for y
      * @param pz   the same for z
-     * @param nx   the offset n of the starts, x
+     * @param nx   the offset n of the ray origins, x
      * @param ny   the same for y
      * @param nz   the same for z
      */
@@ -264,118 +264,118 @@ public final class ShadowFrustum {
         if (side != 0)
             setBackFace(side * nx, side * ny, side * nz);
         else
-            setStarts(px, py, pz, nx, ny, nz);
+            setOrigins(px, py, pz, nx, ny, nz);
     }
 
     /**
      * Tells where the bundle's rays start, when they leave a surface on both sides of it (the pyramid's
      * base straddles the surface's plane, and no back face can be set): a ray that leaves to the side
      * a vector n points to starts at p + n, one that leaves to the other side at p − n, one along the
-     * surface at p. A triangle of the surface around p then lies behind each of the two starts, and
-     * the rays from there need not test it ({@link #startsBehind}, {@link #startOf}): a hierarchy
-     * leaves it out of the bundle ({@link #behindStarts}) and traces a ray from neither start alone.
-     * The next {@link #set} forgets the starts.
+     * surface at p. A triangle of the surface around p then lies behind each of the two ray origins, and
+     * the rays from there need not test it ({@link #originsBehind}, {@link #originOf}): a hierarchy
+     * leaves it out of the bundle ({@link #behindOrigins}) and traces a ray from neither origin alone.
+     * The next {@link #set} forgets the ray origins.
      *
      * @param px the point p the rays leave, x
      * @param py the same for y
      * @param pz the same for z
-     * @param nx the offset n of the starts, x
+     * @param nx the offset n of the ray origins, x
      * @param ny the same for y
      * @param nz the same for z
      */
-    public void setStarts(double px, double py, double pz, double nx, double ny, double nz) {
-        startX = px;
-        startY = py;
-        startZ = pz;
+    public void setOrigins(double px, double py, double pz, double nx, double ny, double nz) {
+        originX = px;
+        originY = py;
+        originZ = pz;
         offsetX = nx;
         offsetY = ny;
         offsetZ = nz;
-        startsSet = nx != 0 || ny != 0 || nz != 0;
-        leftBehindStarts = false;
+        originsSet = nx != 0 || ny != 0 || nz != 0;
+        leftBehindOrigins = false;
     }
 
     /**
-     * Where a ray of the bundle starts, as {@link #setStarts} tells them apart.
+     * Where a ray of the bundle starts, as {@link #setOrigins} tells them apart.
      *
      * @return {@link #ABOVE} for a ray from p + n that leaves to n's side, {@link #BELOW} for a ray
-     *         from p − n that leaves to the other side, else 0 (also when no starts are set)
+     *         from p − n that leaves to the other side, else 0 (also when no ray origins are set)
      */
-    int startOf(double ox, double oy, double oz, double dx, double dy, double dz) {
-        if (!startsSet)
+    int originOf(double ox, double oy, double oz, double dx, double dy, double dz) {
+        if (!originsSet)
             return 0;
         double side = dx * offsetX + dy * offsetY + dz * offsetZ;
-        if (side > 0 && ox == startX + offsetX && oy == startY + offsetY && oz == startZ + offsetZ)
+        if (side > 0 && ox == originX + offsetX && oy == originY + offsetY && oz == originZ + offsetZ)
             return ABOVE;
-        if (side < 0 && ox == startX - offsetX && oy == startY - offsetY && oz == startZ - offsetZ)
+        if (side < 0 && ox == originX - offsetX && oy == originY - offsetY && oz == originZ - offsetZ)
             return BELOW;
         return 0;
     }
 
     /**
-     * The starts ({@link #setStarts}) a triangle lies behind, grown as the renderer's test takes it
+     * The ray origins ({@link #setOrigins}) a triangle lies behind, grown as the renderer's test takes it
      * (see {@link #meetsTriangle}), by more than a rounding margin: behind the plane through p + n
      * across n, which a ray from there leaves forward, or behind the one through p − n across −n. A
-     * ray from such a start cannot meet the triangle.
+     * ray from such an origin cannot meet the triangle.
      *
      * @param data   the triangle as its test takes it: p1, the edges p2 − p1 and p3 − p1
      * @param offset where the nine numbers start
-     * @return {@link #ABOVE}, {@link #BELOW}, both or 0 (always 0 when no starts are set)
+     * @return {@link #ABOVE}, {@link #BELOW}, both or 0 (always 0 when no ray origins are set)
      */
-    int startsBehind(double[] data, int offset) {
-        if (!startsSet)
+    int originsBehind(double[] data, int offset) {
+        if (!originsSet)
             return 0;
-        return startsBehind(along(data[offset] - startX, data[offset + 1] - startY, data[offset + 2] - startZ),
+        return originsBehind(along(data[offset] - originX, data[offset + 1] - originY, data[offset + 2] - originZ),
                 along(data[offset + 3], data[offset + 4], data[offset + 5]),
                 along(data[offset + 6], data[offset + 7], data[offset + 8]));
     }
 
     /**
-     * Whether a triangle lies behind both starts ({@link #setStarts}), as {@link #startsBehind} takes
+     * Whether a triangle lies behind both ray origins ({@link #setOrigins}), as {@link #originsBehind} takes
      * it: then only a ray that starts at neither (one along the surface) may meet it. The frustum
-     * remembers that it said so ({@link #leftBehindStarts}).
+     * remembers that it said so ({@link #leftBehindOrigins}).
      *
      * @param vertices the coordinates of the vertices, three doubles each
      * @param p1       where the first vertex's x lies in vertices
      * @param p2       where the second vertex's x lies
      * @param p3       where the third vertex's x lies
-     * @return true when it lies behind both (never when no starts are set)
+     * @return true when it lies behind both (never when no ray origins are set)
      */
-    boolean behindStarts(double[] vertices, int p1, int p2, int p3) {
-        if (!startsSet)
+    boolean behindOrigins(double[] vertices, int p1, int p2, int p3) {
+        if (!originsSet)
             return false;
         double x = vertices[p1];
         double y = vertices[p1 + 1];
         double z = vertices[p1 + 2];
-        boolean behind = startsBehind(along(x - startX, y - startY, z - startZ),
+        boolean behind = originsBehind(along(x - originX, y - originY, z - originZ),
                 along(vertices[p2] - x, vertices[p2 + 1] - y, vertices[p2 + 2] - z),
                 along(vertices[p3] - x, vertices[p3 + 1] - y, vertices[p3 + 2] - z)) == (ABOVE | BELOW);
-        leftBehindStarts |= behind;
+        leftBehindOrigins |= behind;
         return behind;
     }
 
     /**
-     * {@return whether {@link #behindStarts} has set a triangle aside since the starts were set: a ray
-     * from neither start may still meet it, so the bundle is not open}
+     * {@return whether {@link #behindOrigins} has set a triangle aside since the ray origins were set: a ray
+     * from neither origin may still meet it, so the bundle is not open}
      */
-    boolean leftBehindStarts() {
-        return leftBehindStarts;
+    boolean leftBehindOrigins() {
+        return leftBehindOrigins;
     }
 
-    /** {@return whether starts are set ({@link #setStarts}): a ray from neither then tests every body} */
-    boolean hasStarts() {
-        return startsSet;
+    /** {@return whether ray origins are set ({@link #setOrigins}): a ray from neither then tests every body} */
+    boolean hasOrigins() {
+        return originsSet;
     }
 
-    /** {@return the dot product of a vector with the starts' offset n} */
+    /** {@return the dot product of a vector with the ray origins' offset n} */
     private double along(double x, double y, double z) {
         return x * offsetX + y * offsetY + z * offsetZ;
     }
 
     /**
-     * The starts a triangle lies behind, from its first vertex's height h above p along n and its
+     * The ray origins a triangle lies behind, from its first vertex's height h above p along n and its
      * edges' heights f and g (all times |n|), its vertices grown by the barycentric tolerance.
      */
-    private int startsBehind(double h, double f, double g) {
+    private int originsBehind(double h, double f, double g) {
         double h1 = grown(h, h + f, h + g);
         double h2 = grown(h + f, h, h + g);
         double h3 = grown(h + g, h, h + f);
@@ -426,7 +426,7 @@ public final class ShadowFrustum {
      * @return true when every ray crosses the mesh; false when that is not sure (always after a
      *         refused {@link #set})
      */
-    boolean crossesSolid(InnerBall ball, double[] boxes, int offset) {
+    boolean crossesClosedMesh(InnerBall ball, double[] boxes, int offset) {
         return baseOutside(boxes, offset) && sectionInside(ball);
     }
 
@@ -491,18 +491,18 @@ public final class ShadowFrustum {
      * barycentric tolerance: each vertex p moved by τ·((p − q) + (p − r)), q and r the other two),
      * may meet the pyramid. It is set aside when its three grown vertices lie outside one face of the
      * pyramid (a side, the base, or the back face when set) by more than the thickness and margin: the
-     * triangle, their convex hull, then lies outside it too. When the rays' starts are set, a triangle
-     * behind both is set aside as well ({@link #behindStarts}): only a ray from neither may meet it.
+     * triangle, their convex hull, then lies outside it too. When the rays' origins are set, a triangle
+     * behind both is set aside as well ({@link #behindOrigins}): only a ray from neither may meet it.
      *
      * @param vertices the coordinates of the vertices, three doubles each
      * @param p1       where the first vertex's x lies in vertices
      * @param p2       where the second vertex's x lies
      * @param p3       where the third vertex's x lies
-     * @return false only when no ray of the bundle from its apex or its starts can meet the triangle
-     *         (never after a refused {@link #set}, unless starts were set since)
+     * @return false only when no ray of the bundle from its apex or its ray origins can meet the triangle
+     *         (never after a refused {@link #set}, unless ray origins were set since)
      */
     public boolean meetsTriangle(double[] vertices, int p1, int p2, int p3) {
-        if (behindStarts(vertices, p1, p2, p3))
+        if (behindOrigins(vertices, p1, p2, p3))
             return false;
         if (!valid)
             return true;

@@ -3,6 +3,7 @@ package geometries;
 import accel.ShadowFrustum;
 import accel.InnerBall;
 import accel.BoundingVolumeHierarchy;
+import accel.RayState;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -314,14 +315,15 @@ public final class TriangleMesh extends Geometry {
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         Point3D p0 = ray.getP0();
         Vector dir = ray.getDir();
-        double[] inverse = { 1 / dir.getX(), 1 / dir.getY(), 1 / dir.getZ() };
-        if (!meets(box, p0, inverse, maxDistance))
+        RayState inverted = new RayState().set(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(),
+                maxDistance).invert();
+        if (!meets(box, inverted, maxDistance))
             return null;
         List<GeoPoint> hits = new ArrayList<>();
         double[] triangleBox = new double[6];
         for (int t = 0; t < getTrianglesCount(); ++t) {
             bounds(t, triangleBox, 0);
-            if (meets(triangleBox, p0, inverse, maxDistance)) {
+            if (meets(triangleBox, inverted, maxDistance)) {
                 List<GeoPoint> found = getTriangle(t).findGeoIntersectionsHelper(ray, maxDistance);
                 if (found != null)
                     hits.add(new MeshPoint(this, t, found.get(0).point));
@@ -334,17 +336,15 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
-     * Whether a ray meets a box between its start and a distance, for the course's query: the
-     * hierarchy's slab test ({@link BoundingVolumeHierarchy#slabEntry}).
+     * Whether a ray meets a box between its origin and a distance, for the course's query: the
+     * hierarchy's slab test ({@link RayState#boxEntry}).
      *
-     * @param box     the box
-     * @param p0      the ray's start
-     * @param inverse the inverses of its direction's components
-     * @param maxT    the distance
+     * @param box  the box
+     * @param ray  the ray, {@link RayState#invert inverted}
+     * @param maxT the distance
      */
-    private static boolean meets(double[] box, Point3D p0, double[] inverse, double maxT) {
-        return BoundingVolumeHierarchy.slabEntry(box[0], box[1], box[2], box[3], box[4], box[5], p0.getX(), p0.getY(),
-                p0.getZ(), inverse[0], inverse[1], inverse[2], maxT) != BoundingVolumeHierarchy.MISSED;
+    private static boolean meets(double[] box, RayState ray, double maxT) {
+        return ray.boxEntry(box, 0, maxT) != RayState.MISSED;
     }
 
     /** The renderer's path for the whole mesh (outside a hierarchy): the nearest closed triangle hit. */

@@ -1,6 +1,7 @@
 package renderer;
 
 import accel.BoundingVolumeHierarchy;
+import accel.Query;
 import accel.ShadowFrustum;
 import geometries.Triangle;
 import lighting.AreaLightSource;
@@ -66,16 +67,16 @@ final class LightSquare {
     private double centreDy;
     private double centreDz;
     private BoundingVolumeHierarchy bvh;
-    private BoundingVolumeHierarchy.Query query;
+    private Query query;
     private Bundle bundle = Bundle.WHOLE;
-    /** Whether the lit point lies on a triangle (of a mesh, or a {@link Triangle}): see {@link #setFacet}. */
-    private boolean facet;
+    /** Whether the lit point lies on a triangle (of a mesh, or a {@link Triangle}): see {@link #setOnTriangle}. */
+    private boolean onTriangle;
 
     /**
      * Sets the lit point and the ray from it to the light (to the centre of the light's square),
      * the same ray as {@link Ray#Ray(Point3D, Vector, Vector)} makes from the point toward −l.
      * No square is set: until {@link #setSquare}, rays walk the whole hierarchy; the point is not
-     * taken to lie on a triangle until {@link #setFacet} says so.
+     * taken to lie on a triangle until {@link #setOnTriangle} says so.
      *
      * @param p     the lit point
      * @param n     the surface normal at the point
@@ -85,7 +86,7 @@ final class LightSquare {
      * @return this light square
      */
     LightSquare setPoint(Point3D p, Vector n, Vector l, BoundingVolumeHierarchy bvh,
-                         BoundingVolumeHierarchy.Query query) {
+                         Query query) {
         double normalX = n.getX();
         double normalY = n.getY();
         double normalZ = n.getZ();
@@ -101,7 +102,7 @@ final class LightSquare {
         this.bvh = bvh;
         this.query = query;
         this.bundle = Bundle.WHOLE;
-        this.facet = false;
+        this.onTriangle = false;
         double dirX = -l.getX();
         double dirY = -l.getY();
         double dirZ = -l.getZ();
@@ -127,8 +128,8 @@ final class LightSquare {
      * @param onTriangle whether the point lies on a triangle
      * @return this light square
      */
-    LightSquare setFacet(boolean onTriangle) {
-        this.facet = onTriangle;
+    LightSquare setOnTriangle(boolean onTriangle) {
+        this.onTriangle = onTriangle;
         return this;
     }
 
@@ -159,7 +160,7 @@ final class LightSquare {
      * Gathers the bodies the bundle's rays may meet. When all the rays leave the surface on the
      * same side, they start at one point DELTA off the surface, the apex of their pyramid;
      * otherwise the pyramid starts at the point itself and is DELTA thick. For a point on a
-     * triangle ({@link #setFacet}), the frustum is told the surface the rays leave, which lies
+     * triangle ({@link #setOnTriangle}), the frustum is told the surface the rays leave, which lies
      * behind their starts ({@link accel.ShadowFrustum#setLeaving}).
      *
      * @return how the bundle's rays are to be traced
@@ -185,7 +186,7 @@ final class LightSquare {
         if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
                 cz + side * nz, ax, ay, az, bx, by, bz, thickness))
             return Bundle.WHOLE;
-        if (facet)
+        if (onTriangle)
             frustum.setLeaving((int) side, px, py, pz, nx, ny, nz);
         if (!bvh.gather(query))
             return Bundle.OPEN;
@@ -205,12 +206,12 @@ final class LightSquare {
     }
 
     /** {@return true when the bundle's rays need no tracing: it is open, or blocked} */
-    boolean isSettled() {
+    boolean isResolved() {
         return isOpen() || isBlocked();
     }
 
-    /** {@return the summed transparency of some rays of a settled bundle: 1 each when open, else 0} */
-    private double settled(int rays) {
+    /** {@return the summed transparency of some rays of a resolved bundle: 1 each when open, else 0} */
+    private double resolved(int rays) {
         return isOpen() ? rays : 0;
     }
 
@@ -221,17 +222,17 @@ final class LightSquare {
      * @return the transparency in [0, 1]
      */
     double visibility(double distance) {
-        if (isSettled())
-            return settled(1);
+        if (isResolved())
+            return resolved(1);
         return transmittance(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
     }
 
     /** The transparency along one ray of the bundle, traced alone. */
     private double transmittance(double ox, double oy, double oz, double dx, double dy, double dz,
                                  double distance) {
-        return bundle == Bundle.WHOLE
-                ? bvh.transmittance(ox, oy, oz, dx, dy, dz, distance, RayTracerBasic.MIN_CALC_COLOR_K, query)
-                : bvh.gatheredTransmittance(ox, oy, oz, dx, dy, dz, distance, RayTracerBasic.MIN_CALC_COLOR_K, query);
+        query.setRay(ox, oy, oz, dx, dy, dz, distance);
+        return bundle == Bundle.WHOLE ? bvh.transmittance(query, RayTracerBasic.MIN_CALC_COLOR_K)
+                : bvh.bundleRayTransmittance(query, RayTracerBasic.MIN_CALC_COLOR_K);
     }
 
     /**
@@ -245,8 +246,8 @@ final class LightSquare {
      * @return the centre's transparency plus the sum of the others'
      */
     double visibility(double distance, double[] samples, int to) {
-        if (isSettled())
-            return settled(1 + to);
+        if (isResolved())
+            return resolved(1 + to);
         if (bundle != Bundle.PACKET)
             return visibility(distance) + traceSamples(samples, 0, to);
         query.clearPacket();
@@ -266,8 +267,8 @@ final class LightSquare {
      * @return the sum of the rays' transparencies
      */
     double visibility(double[] samples, int from, int to) {
-        if (isSettled())
-            return settled(to - from);
+        if (isResolved())
+            return resolved(to - from);
         if (bundle != Bundle.PACKET)
             return traceSamples(samples, from, to);
         query.clearPacket();
@@ -315,7 +316,7 @@ final class LightSquare {
      * @return the sum of the answers of the rays from that one on
      */
     private double tracePacket(int from) {
-        bvh.gatheredTransmittances(RayTracerBasic.MIN_CALC_COLOR_K, query);
+        bvh.packetTransmittances(query, RayTracerBasic.MIN_CALC_COLOR_K);
         double ktr = 0;
         for (int r = from; r < query.getPacketSize(); ++r)
             ktr += query.getTransmittance(r);

@@ -290,7 +290,7 @@ public class RayTracerBasic extends RayTracerBase {
         Point3D point = geoPoint.point;
         // the ray to the light itself, or to the centre of its square
         LightSquare square = state.lightSquare().setPoint(point, n, l, bvh, state.query(bvh))
-                .setFacet(geoPoint.geometry instanceof TriangleMesh || geoPoint.geometry instanceof Triangle);
+                .setOnTriangle(geoPoint.geometry instanceof TriangleMesh || geoPoint.geometry instanceof Triangle);
         double distance = light.getDistance(point);
         if (isSoftShadows() && light instanceof AreaLightSource areaLight && areaLight.getEdges() > 0)
             return calcSoftShadows(areaLight, square, distance, state);
@@ -314,7 +314,7 @@ public class RayTracerBasic extends RayTracerBase {
         square.setSquare(light);
         JitteredGrid grid = getBeamGrid();
         double[] samples = state.points(grid);
-        if (square.isSettled()) // the points are not needed, but the numbers drawn after them must stay the same
+        if (square.isResolved()) // the points are not needed, but the numbers drawn after them must stay the same
             state.random.skip(2L * grid.getSamplesCount());
         else
             grid.sampleUnchecked(state.random, samples);

@@ -3,6 +3,7 @@ package renderer;
 import java.util.Arrays;
 
 import accel.BoundingVolumeHierarchy;
+import accel.Query;
 import primitives.Color;
 
 /**
@@ -30,7 +31,7 @@ final class ThreadState {
     /** Room for the one jittered point of a spread ray inside a beam. */
     private final double[] spreadPoint = new double[2];
     private BoundingVolumeHierarchy queried;
-    private BoundingVolumeHierarchy.Query query;
+    private Query query;
     private double[] pixelPoints = new double[0];
     private double[] aperturePoints = new double[0];
     /** The colours seen through the lattice points of the pixel being sampled adaptively. */
@@ -150,7 +151,7 @@ final class ThreadState {
      * @param bvh the hierarchy
      * @return this thread's query for it
      */
-    BoundingVolumeHierarchy.Query query(BoundingVolumeHierarchy bvh) {
+    Query query(BoundingVolumeHierarchy bvh) {
         if (queried != bvh) {
             query = bvh.newQuery();
             queried = bvh;

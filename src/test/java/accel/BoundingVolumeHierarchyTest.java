@@ -31,7 +31,6 @@ import java.util.function.Supplier;
 
 import org.junit.jupiter.api.Test;
 
-import accel.BoundingVolumeHierarchy.Query;
 import geometries.Intersectable.GeoPoint;
 import primitives.Material;
 import primitives.Point3D;
@@ -422,7 +421,7 @@ class BoundingVolumeHierarchyTest {
     private static double transmittance(BoundingVolumeHierarchy bvh, Ray ray, double maxT, double minK, Query query) {
         Point3D p = ray.getP0();
         Vector d = ray.getDir();
-        return bvh.transmittance(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), maxT, minK, query);
+        return bvh.transmittance(query.setRay(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), maxT), minK);
     }
 
     /**
@@ -485,7 +484,7 @@ class BoundingVolumeHierarchyTest {
     // ---------------------------------------------------------------- tests
 
     /**
-     * Test method for {@link BoundingVolumeHierarchy#closestHit(Ray, BoundingVolumeHierarchy.Query)}
+     * Test method for {@link BoundingVolumeHierarchy#closestHit(Ray, Query)}
      * against the brute force, on 20 random scenes × 500 random rays.
      */
     @Test
@@ -1228,7 +1227,7 @@ class BoundingVolumeHierarchyTest {
 
     /** The thickness of the renderer's bundles whose rays leave the surface on both sides (Ray.DELTA). */
     private static final double THICK = 0.1;
-    /** The most bodies of the tree gather keeps one by one (BoundingVolumeHierarchy.MAX_GATHERED). */
+    /** The most bodies of the tree gather keeps one by one (Query.MAX_GATHERED). */
     private static final int MAX_GATHERED = 32;
 
     /**
@@ -1409,7 +1408,7 @@ class BoundingVolumeHierarchyTest {
     private static double gathered(BoundingVolumeHierarchy bvh, Ray ray, double maxT, double minK, Query query) {
         Point3D p = ray.getP0();
         Vector d = ray.getDir();
-        return bvh.gatheredTransmittance(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), maxT, minK, query);
+        return bvh.bundleRayTransmittance(query.setRay(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), maxT), minK);
     }
 
     /**
@@ -1552,7 +1551,7 @@ class BoundingVolumeHierarchyTest {
                                      Supplier<String> label) {
         for (double minK : new double[] { MIN_K, 0 }) {
             fillPacket(query, rays, distances);
-            bvh.gatheredTransmittances(minK, query);
+            bvh.packetTransmittances(query, minK);
             for (int r = 0; r < rays.size(); ++r) {
                 double expected = transmittance(reference, rays.get(r), distances.get(r), minK, referenceQuery);
                 int number = r;
@@ -1721,7 +1720,7 @@ class BoundingVolumeHierarchyTest {
                 distances.add(apex.distance(target));
             }
         fillPacket(query, rays, distances);
-        bvh.gatheredTransmittances(MIN_K, query);
+        bvh.packetTransmittances(query, MIN_K);
         double[] answers = new double[rays.size()];
         for (int r = 0; r < answers.length; ++r)
             answers[r] = query.getTransmittance(r);
@@ -1766,7 +1765,7 @@ class BoundingVolumeHierarchyTest {
         }
         fillPacket(query, rays, distances);
         assertEquals(100, query.getPacketSize(), "TC04: the packet holds every ray added");
-        bvh.gatheredTransmittances(MIN_K, query);
+        bvh.packetTransmittances(query, MIN_K);
         for (int r = 0; r < rays.size(); ++r)
             assertEquals(transmittance(bvh, rays.get(r), distances.get(r), MIN_K, bvh.newQuery()),
                     query.getTransmittance(r), 1e-12, "TC04: ray " + r);
@@ -1777,21 +1776,21 @@ class BoundingVolumeHierarchyTest {
         bvh.gather(query);
         assertFalse(query.isSubtreeGathered(), "TC05: no subtree for a bundle that meets nothing");
         fillPacket(query, rays.subList(0, 1), List.of(0.1));
-        bvh.gatheredTransmittances(MIN_K, query);
+        bvh.packetTransmittances(query, MIN_K);
         assertEquals(1, query.getTransmittance(0), 0, "TC05: nothing before the light");
 
         // ===== Boundary Values Tests =====
         // TC11: a cleared packet holds no ray, and tracing it answers nothing
         query.clearPacket();
         assertEquals(0, query.getPacketSize(), "TC11: a cleared packet is empty");
-        bvh.gatheredTransmittances(MIN_K, query);
+        bvh.packetTransmittances(query, MIN_K);
         assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(0),
                 "TC11: an empty packet has no answer"), "packet", "TC11");
         // TC12: a packet of one ray: the ray's own answer (the light just before the transparent plate: 1)
         plateBundle(bvh, query, apex, 1);
         query.clearPacket();
         query.addToPacket(0.05, 0.1, -5, 0, 0, 1, 5 - 1e-6);
-        bvh.gatheredTransmittances(MIN_K, query);
+        bvh.packetTransmittances(query, MIN_K);
         assertEquals(1, query.getTransmittance(0), 0, "TC12: the light just before the plate");
         // TC13: answers only for rays 0 to size − 1
         assertMessage(assertThrows(IllegalArgumentException.class, () -> query.getTransmittance(-1),
@@ -1871,7 +1870,7 @@ class BoundingVolumeHierarchyTest {
             distances.add(direction.length() * 51 / 50);
         }
         fillPacket(query, rays, distances);
-        bvh.gatheredTransmittances(minK, query);
+        bvh.packetTransmittances(query, minK);
         double[] answers = new double[rays.size()];
         for (int r = 0; r < answers.length; ++r) {
             answers[r] = query.getTransmittance(r);
@@ -2316,7 +2315,7 @@ class BoundingVolumeHierarchyTest {
             frustum.setBackFace(side * n.getX(), side * n.getY(), side * n.getZ());
             assertTrue(frustum.hasBackFace(), "the base of a bundle leaving on one side must lie ahead of its back face");
         } else if (facet)
-            frustum.setStarts(p.getX(), p.getY(), p.getZ(), n.getX(), n.getY(), n.getZ());
+            frustum.setOrigins(p.getX(), p.getY(), p.getZ(), n.getX(), n.getY(), n.getZ());
         return new int[] { side, bvh.gather(query) ? 1 : 0 };
     }
 
@@ -2429,13 +2428,11 @@ class BoundingVolumeHierarchyTest {
         for (double[] ray : rays) {
             Supplier<String> label = () -> bundleLabel + " ray " + Arrays.toString(ray);
             for (double minK : new double[] { MIN_K, 0 }) {
-                double expected = scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], minK,
-                        scanQuery);
-                assertEquals(expected, bvh.gatheredTransmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5],
-                        ray[6], minK, query), 0, label);
+                double expected = scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK);
+                assertEquals(expected, bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK), 0, label);
             }
             ++counts.rays;
-            if (scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], 0, scanQuery) < 1)
+            if (scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), 0) < 1)
                 ++counts.darkened;
             packet.add(new Ray(new Point3D(ray[0], ray[1], ray[2]), new Vector(ray[3], ray[4], ray[5])));
             distances.add(ray[6]);
@@ -2452,9 +2449,9 @@ class BoundingVolumeHierarchyTest {
             if (!frustum.meetsBox(box, 0) || !mesh.mayMeet(k, frustum))
                 continue;
             mesh.triangleData(k, data, 0);
-            int behind = frustum.startsBehind(data, 0);
+            int behind = frustum.originsBehind(data, 0);
             for (double[] ray : rays)
-                if ((frustum.startOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]) & behind) != 0) {
+                if ((frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]) & behind) != 0) {
                     ++counts.skipped;
                     skipping = true;
                     int triangle = k;
@@ -2470,7 +2467,7 @@ class BoundingVolumeHierarchyTest {
     /**
      * Test method for {@link BoundingVolumeHierarchy#gather} and
      * {@link BoundingVolumeHierarchy#gatheredTransmittance} on bundles that leave a mesh's surface, set
-     * as the renderer sets them ({@link ShadowFrustum#setBackFace}, {@link ShadowFrustum#setStarts}):
+     * as the renderer sets them ({@link ShadowFrustum#setBackFace}, {@link ShadowFrustum#setOrigins}):
      * every ray's answer equals the brute-force scan's, though gathered triangles behind a ray's start
      * are skipped, and a bundle leaving a convex mesh gathers nothing.
      */
@@ -2534,10 +2531,8 @@ class BoundingVolumeHierarchyTest {
             assertEquals(1, gathered[0], () -> "TC02: bundle " + number + " must leave on the normal's side");
             assertEquals(0, gathered[1], () -> "TC02: bundle " + number + " from " + p + " must gather nothing");
             for (double[] ray : shadowRays(rnd, p, n, c, a, b, 20)) {
-                assertEquals(1, scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], MIN_K,
-                        scanQuery), 0, "TC02: a ray leaving a convex mesh is open");
-                assertEquals(1, bvh.gatheredTransmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6],
-                        MIN_K, query), 0, "TC02: a ray leaving a convex mesh is open (gathered)");
+                assertEquals(1, scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), MIN_K), 0, "TC02: a ray leaving a convex mesh is open");
+                assertEquals(1, bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), MIN_K), 0, "TC02: a ray leaving a convex mesh is open (gathered)");
             }
             // the same pyramid without the back face
             Point3D apex = p.add(n);
@@ -2720,10 +2715,8 @@ class BoundingVolumeHierarchyTest {
         double assertAsScan(double[] ray, String label) {
             double expected = 0;
             for (double minK : new double[] { MIN_K, 0 }) {
-                expected = scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], minK,
-                        scanQuery);
-                assertEquals(expected, bvh.gatheredTransmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5],
-                        ray[6], minK, query), 0, () -> label + " " + Arrays.toString(ray) + " minK " + minK);
+                expected = scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK);
+                assertEquals(expected, bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK), 0, () -> label + " " + Arrays.toString(ray) + " minK " + minK);
             }
             return expected;
         }
@@ -2755,7 +2748,7 @@ class BoundingVolumeHierarchyTest {
 
     /**
      * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittance} on a ray from neither start
-     * ({@link ShadowFrustum#setStarts}): the gather left out the triangles between the starts, and such a
+     * ({@link ShadowFrustum#setOrigins}): the gather left out the triangles between the starts, and such a
      * ray is traced through the whole hierarchy, with exactly the scan's answer, also when a left-out
      * triangle blocks it.
      * <p>
@@ -2776,7 +2769,7 @@ class BoundingVolumeHierarchyTest {
             ShadowFrustum frustum = bundle.query().getFrustum();
             // every triangle of the ridge lies behind both starts and is left out
             for (int t = 0; t < ridge.size(); ++t) {
-                assertTrue(frustum.behindStarts(ridge.get(t), 0, 3, 6), kind + ": triangle " + t + " behind both");
+                assertTrue(frustum.behindOrigins(ridge.get(t), 0, 3, 6), kind + ": triangle " + t + " behind both");
                 assertFalse(surface.mayMeet(t, frustum), kind + ": triangle " + t + " must be left out");
             }
             double[] along = rayFromTo(p, c);
@@ -2791,7 +2784,7 @@ class BoundingVolumeHierarchyTest {
 
             // ===== Equivalence Partitions Tests =====
             // TC01: from p along the surface into the rising slope: start 0 (expects 0, the scan's answer)
-            assertEquals(0, frustum.startOf(along[0], along[1], along[2], along[3], along[4], along[5]),
+            assertEquals(0, frustum.originOf(along[0], along[1], along[2], along[3], along[4], along[5]),
                     "TC01: " + kind + ": a ray from p starts at neither");
             assertEquals(0, bundle.assertAsScan(along, "TC01: " + kind + ": from p along"), 0,
                     "TC01: " + kind + ": the left-out slope blocks the ray from p");
@@ -2807,7 +2800,7 @@ class BoundingVolumeHierarchyTest {
             int blocked = 0;
             for (int r = 0; r < 100; ++r) {
                 double[] ray = rayFromTo(stray(rnd, p, Ray.DELTA), squarePoint(rnd, c, bundle.a(), bundle.b()));
-                assertEquals(0, frustum.startOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]), "TC04: start 0");
+                assertEquals(0, frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]), "TC04: start 0");
                 if (bundle.assertAsScan(ray, "TC04: " + kind + ": from off the starts") == 0)
                     ++blocked;
             }
@@ -2820,7 +2813,7 @@ class BoundingVolumeHierarchyTest {
             // TC11: from p + n exactly along the surface (d·n = 0): start 0, over the ridge, through the
             // sphere (expects 0.25, the scan's)
             double[] above = rayFromTo(p.add(UP), c.add(UP));
-            assertEquals(0, frustum.startOf(above[0], above[1], above[2], above[3], above[4], above[5]),
+            assertEquals(0, frustum.originOf(above[0], above[1], above[2], above[3], above[4], above[5]),
                     "TC11: along the surface from p + n starts at neither");
             assertEquals(0.25, bundle.assertAsScan(above, "TC11: " + kind), 0,
                     "TC11: " + kind + ": only the sphere dims it");
@@ -2868,7 +2861,7 @@ class BoundingVolumeHierarchyTest {
             // ===== Equivalence Partitions Tests =====
             // TC01: the floor's triangles lie behind both starts (expects left out)
             for (int t = 0; t < 2; ++t) {
-                assertTrue(frustum.behindStarts(shelves.get(t), 0, 3, 6), "TC01: " + kind + ": floor behind both");
+                assertTrue(frustum.behindOrigins(shelves.get(t), 0, 3, 6), "TC01: " + kind + ": floor behind both");
                 assertFalse(surface.mayMeet(t, frustum), "TC01: " + kind + ": the floor must be left out");
             }
             // TC02: the shelves over the surface lie behind p − n only, those under it behind p + n only
@@ -2877,9 +2870,9 @@ class BoundingVolumeHierarchyTest {
                 double[] v = shelves.get(t);
                 double[] data = { v[0], v[1], v[2], v[3] - v[0], v[4] - v[1], v[5] - v[2], v[6] - v[0], v[7] - v[1],
                         v[8] - v[2] };
-                assertEquals(v[2] > 0 ? ShadowFrustum.BELOW : ShadowFrustum.ABOVE, frustum.startsBehind(data, 0),
+                assertEquals(v[2] > 0 ? ShadowFrustum.BELOW : ShadowFrustum.ABOVE, frustum.originsBehind(data, 0),
                         "TC02: " + kind + ": shelf triangle " + t + " behind one start");
-                assertFalse(frustum.behindStarts(v, 0, 3, 6), "TC02: " + kind + ": shelf " + t + " not behind both");
+                assertFalse(frustum.behindOrigins(v, 0, 3, 6), "TC02: " + kind + ": shelf " + t + " not behind both");
                 assertTrue(surface.mayMeet(t, frustum), "TC02: " + kind + ": shelf " + t + " must be kept");
             }
             // TC03: 400 rays from the starts to random points of the square, as the renderer traces them: the
@@ -2888,7 +2881,7 @@ class BoundingVolumeHierarchyTest {
             int[] dimmedTwice = new int[3];
             int[] open = new int[3];
             for (double[] ray : bundle.shadowRays(rnd, 400)) {
-                int start = frustum.startOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]);
+                int start = frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]);
                 double answer = bundle.assertAsScan(ray, "TC03: " + kind + ": start " + start);
                 if (answer <= 0.25)
                     ++dimmedTwice[start];
@@ -2901,11 +2894,11 @@ class BoundingVolumeHierarchyTest {
             // TC04: from p + n through the shelf at 0.3 (x 5) and the one at 0.6 (x 6.67) to (10, 0, 1): start
             // ABOVE (expects 0.25); its mirror from p − n (expects 0.25)
             double[] up = rayFromTo(p.add(UP), new Point3D(10, 0, 1));
-            assertEquals(ShadowFrustum.ABOVE, frustum.startOf(up[0], up[1], up[2], up[3], up[4], up[5]), "TC04");
+            assertEquals(ShadowFrustum.ABOVE, frustum.originOf(up[0], up[1], up[2], up[3], up[4], up[5]), "TC04");
             assertEquals(0.25, bundle.assertAsScan(up, "TC04: " + kind + ": up"), 0,
                     "TC04: " + kind + ": two shelves over the surface");
             double[] down = rayFromTo(p.add(UP.scale(-1)), new Point3D(10, 0, -1));
-            assertEquals(ShadowFrustum.BELOW, frustum.startOf(down[0], down[1], down[2], down[3], down[4], down[5]),
+            assertEquals(ShadowFrustum.BELOW, frustum.originOf(down[0], down[1], down[2], down[3], down[4], down[5]),
                     "TC04");
             assertEquals(0.25, bundle.assertAsScan(down, "TC04: " + kind + ": down"), 0,
                     "TC04: " + kind + ": two shelves under the surface");
@@ -2922,11 +2915,10 @@ class BoundingVolumeHierarchyTest {
             Query floorQuery = floorBvh.newQuery();
             int[] floorGathered = gatherLeaving(floorBvh, floorQuery, p, UP, bundle.c(), bundle.a(), bundle.b());
             assertNotNull(floorGathered, "TC12: the pyramid must not be flat");
-            assertTrue(floorQuery.getFrustum().leftBehindStarts(),
+            assertTrue(floorQuery.getFrustum().leftBehindOrigins(),
                     "TC12: " + kind + ": the floor between the starts must be left out");
             assertEquals(1, floorGathered[1], "TC12: " + kind + ": a bundle that left triangles out must not be open");
-            assertEquals(1, floorBvh.gatheredTransmittance(up[0], up[1], up[2], up[3], up[4], up[5], up[6], 0,
-                    floorQuery), 0, "TC12: " + kind + ": a ray from a start over the floor");
+            assertEquals(1, floorBvh.bundleRayTransmittance(floorQuery.setRay(up[0], up[1], up[2], up[3], up[4], up[5], up[6]), 0), 0, "TC12: " + kind + ": a ray from a start over the floor");
         }
     }
 
@@ -3134,13 +3126,11 @@ class BoundingVolumeHierarchyTest {
                 Supplier<String> label = () -> bundleLabel + " ray " + Arrays.toString(ray);
                 double expected = 1;
                 for (double minK : new double[] { MIN_K, 0 }) {
-                    expected = scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], minK,
-                            scanQuery);
+                    expected = scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK);
                     if (blocked)
                         assertEquals(0, expected, 0, () -> label.get() + ": a ray of a blocked bundle must be blocked");
                     else
-                        assertEquals(expected, bvh.gatheredTransmittance(ray[0], ray[1], ray[2], ray[3], ray[4],
-                                ray[5], ray[6], minK, query), 0, label);
+                        assertEquals(expected, bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK), 0, label);
                 }
                 ++counts.rays;
                 if (expected < 1) // without the cut-off
@@ -3244,8 +3234,7 @@ class BoundingVolumeHierarchyTest {
             gatherLeaving(scan, scanQuery, p, n, c, a, b, false);
             assertFalse(scan.blocksBundle(scanQuery), "TC11: the scan must block no bundle (mesh " + m + ")");
             for (double[] ray : shadowRays(rnd, p, n, c, a, b, 10))
-                assertEquals(0, scan.transmittance(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6], 0,
-                        scanQuery), 0, "TC11: a ray under mesh " + m + " must be blocked");
+                assertEquals(0, scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), 0), 0, "TC11: a ray under mesh " + m + " must be blocked");
         }
     }
 }

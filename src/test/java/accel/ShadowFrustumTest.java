@@ -420,7 +420,7 @@ class ShadowFrustumTest {
         ShadowFrustum above = standard();
         above.setLeaving(1, 0, 0, -0.1, 0, 0, 0.1);
         assertTrue(above.hasBackFace(), "TC01: leaving on n's side must give a back face");
-        assertFalse(above.hasStarts(), "TC01: leaving on one side must set no starts");
+        assertFalse(above.hasOrigins(), "TC01: leaving on one side must set no starts");
         // TC02: side −1 with n = (0, 0, −0.1): the back face across −n, the base ahead along it (expects
         // a back face)
         ShadowFrustum below = standard();
@@ -429,9 +429,9 @@ class ShadowFrustumTest {
         // TC03: side 0: the starts p ± n (expects starts, no back face, p + n a start)
         ShadowFrustum both = standard(0.1);
         both.setLeaving(0, 0, 0, 0, 0, 0, 0.1);
-        assertTrue(both.hasStarts(), "TC03: leaving on both sides must set the starts");
+        assertTrue(both.hasOrigins(), "TC03: leaving on both sides must set the starts");
         assertFalse(both.hasBackFace(), "TC03: leaving on both sides must give no back face");
-        assertEquals(ShadowFrustum.ABOVE, both.startOf(0, 0, 0.1, 0, 0, 1), "TC03: p + n must be a start");
+        assertEquals(ShadowFrustum.ABOVE, both.originOf(0, 0, 0.1, 0, 0, 1), "TC03: p + n must be a start");
 
         // ===== Boundary Values Tests =====
         // TC11: side 1 with n pointing away from the base: the back face cannot be placed (expects none)
@@ -441,7 +441,7 @@ class ShadowFrustumTest {
     }
 
     /**
-     * Test method for {@link ShadowFrustum#setStarts} and {@link ShadowFrustum#startOf}: a ray from
+     * Test method for {@link ShadowFrustum#setOrigins} and {@link ShadowFrustum#originOf}: a ray from
      * exactly p + n to n's side starts {@link ShadowFrustum#ABOVE}, one from exactly p − n to the other
      * side {@link ShadowFrustum#BELOW}, any other 0.
      */
@@ -454,40 +454,40 @@ class ShadowFrustumTest {
         double pz = 3;
         double ny = 0.1;
         double nz = 0.1;
-        frustum.setStarts(px, py, pz, 0, ny, nz);
+        frustum.setOrigins(px, py, pz, 0, ny, nz);
 
         // ===== Equivalence Partitions Tests =====
         // TC01: from p + n along n, and slanted to n's side: ABOVE
-        assertEquals(ShadowFrustum.ABOVE, frustum.startOf(px, py + ny, pz + nz, 0, 1, 1), "TC01: along n from p + n");
-        assertEquals(ShadowFrustum.ABOVE, frustum.startOf(px, py + ny, pz + nz, 0.8, 0.6, -0.2),
+        assertEquals(ShadowFrustum.ABOVE, frustum.originOf(px, py + ny, pz + nz, 0, 1, 1), "TC01: along n from p + n");
+        assertEquals(ShadowFrustum.ABOVE, frustum.originOf(px, py + ny, pz + nz, 0.8, 0.6, -0.2),
                 "TC01: slanted to n's side from p + n");
         // TC02: from p − n against n, and slanted to the other side: BELOW
-        assertEquals(ShadowFrustum.BELOW, frustum.startOf(px, py - ny, pz - nz, 0, -1, -1), "TC02: against n from p − n");
-        assertEquals(ShadowFrustum.BELOW, frustum.startOf(px, py - ny, pz - nz, -0.8, 0.2, -0.6),
+        assertEquals(ShadowFrustum.BELOW, frustum.originOf(px, py - ny, pz - nz, 0, -1, -1), "TC02: against n from p − n");
+        assertEquals(ShadowFrustum.BELOW, frustum.originOf(px, py - ny, pz - nz, -0.8, 0.2, -0.6),
                 "TC02: slanted to the other side from p − n");
         // TC03: from p + n to the other side, from p − n to n's side: 0
-        assertEquals(0, frustum.startOf(px, py + ny, pz + nz, 0, -1, 0), "TC03: from p + n against n");
-        assertEquals(0, frustum.startOf(px, py - ny, pz - nz, 0, 0, 1), "TC03: from p − n along n");
+        assertEquals(0, frustum.originOf(px, py + ny, pz + nz, 0, -1, 0), "TC03: from p + n against n");
+        assertEquals(0, frustum.originOf(px, py - ny, pz - nz, 0, 0, 1), "TC03: from p − n along n");
         // TC04: from p itself, and from a point elsewhere: 0
-        assertEquals(0, frustum.startOf(px, py, pz, 0, 1, 1), "TC04: from p itself");
-        assertEquals(0, frustum.startOf(5, 5, 5, 0, 1, 1), "TC04: from elsewhere");
+        assertEquals(0, frustum.originOf(px, py, pz, 0, 1, 1), "TC04: from p itself");
+        assertEquals(0, frustum.originOf(5, 5, 5, 0, 1, 1), "TC04: from elsewhere");
 
         // ===== Boundary Values Tests =====
         // TC11: from p + n with one coordinate one ulp off: 0 (each coordinate in turn), and the same for p − n
-        assertEquals(0, frustum.startOf(Math.nextUp(px), py + ny, pz + nz, 0, 1, 1), "TC11: x one ulp off p + n");
-        assertEquals(0, frustum.startOf(px, Math.nextUp(py + ny), pz + nz, 0, 1, 1), "TC11: y one ulp off p + n");
-        assertEquals(0, frustum.startOf(px, py + ny, Math.nextDown(pz + nz), 0, 1, 1), "TC11: z one ulp off p + n");
-        assertEquals(0, frustum.startOf(px, py - ny, Math.nextUp(pz - nz), 0, -1, -1), "TC11: z one ulp off p − n");
+        assertEquals(0, frustum.originOf(Math.nextUp(px), py + ny, pz + nz, 0, 1, 1), "TC11: x one ulp off p + n");
+        assertEquals(0, frustum.originOf(px, Math.nextUp(py + ny), pz + nz, 0, 1, 1), "TC11: y one ulp off p + n");
+        assertEquals(0, frustum.originOf(px, py + ny, Math.nextDown(pz + nz), 0, 1, 1), "TC11: z one ulp off p + n");
+        assertEquals(0, frustum.originOf(px, py - ny, Math.nextUp(pz - nz), 0, -1, -1), "TC11: z one ulp off p − n");
         // TC12: a direction along the surface (d·n = 0), from either start: 0
-        assertEquals(0, frustum.startOf(px, py + ny, pz + nz, 0, 1, -1), "TC12: along the surface from p + n");
-        assertEquals(0, frustum.startOf(px, py - ny, pz - nz, 1, 0, 0), "TC12: along the surface from p − n");
+        assertEquals(0, frustum.originOf(px, py + ny, pz + nz, 0, 1, -1), "TC12: along the surface from p + n");
+        assertEquals(0, frustum.originOf(px, py - ny, pz - nz, 1, 0, 0), "TC12: along the surface from p − n");
         // TC13: a new set forgets the starts: 0
         frustum = standard(0.1);
-        assertEquals(0, frustum.startOf(px, py + ny, pz + nz, 0, 1, 1), "TC13: after a new set no start is known");
+        assertEquals(0, frustum.originOf(px, py + ny, pz + nz, 0, 1, 1), "TC13: after a new set no start is known");
         // TC14: starts never set: 0; set with n = 0: 0 (p + n = p − n = p from either side)
-        assertEquals(0, new ShadowFrustum().startOf(px, py + ny, pz + nz, 0, 1, 1), "TC14: no starts set");
-        frustum.setStarts(px, py, pz, 0, 0, 0);
-        assertEquals(0, frustum.startOf(px, py, pz, 0, 1, 1), "TC14: a zero offset sets no starts");
+        assertEquals(0, new ShadowFrustum().originOf(px, py + ny, pz + nz, 0, 1, 1), "TC14: no starts set");
+        frustum.setOrigins(px, py, pz, 0, 0, 0);
+        assertEquals(0, frustum.originOf(px, py, pz, 0, 1, 1), "TC14: a zero offset sets no starts");
     }
 
     /**
@@ -495,16 +495,16 @@ class ShadowFrustumTest {
      *
      * @param frustum the frustum
      * @param v       the vertices p1, p2, p3
-     * @return {@link ShadowFrustum#startsBehind} of p1, p2 − p1, p3 − p1
+     * @return {@link ShadowFrustum#originsBehind} of p1, p2 − p1, p3 − p1
      */
-    private static int startsBehind(ShadowFrustum frustum, double... v) {
+    private static int originsBehind(ShadowFrustum frustum, double... v) {
         double[] data = new double[12];
         for (int k = 0; k < 3; ++k) {
             data[3 + k] = v[k];
             data[6 + k] = v[3 + k] - v[k];
             data[9 + k] = v[6 + k] - v[k];
         }
-        return frustum.startsBehind(data, 3);
+        return frustum.originsBehind(data, 3);
     }
 
     /**
@@ -518,7 +518,7 @@ class ShadowFrustumTest {
     }
 
     /**
-     * Test method for {@link ShadowFrustum#startsBehind}: which of the starts p ± n a triangle (grown by
+     * Test method for {@link ShadowFrustum#originsBehind}: which of the starts p ± n a triangle (grown by
      * the renderer's tolerance) lies behind by more than the rounding margin.
      * <p>
      * The standard pyramid 0.1 thick (margin 2.8e-6, plus the thickness for boxes and faces; the
@@ -527,48 +527,48 @@ class ShadowFrustumTest {
     @Test
     void testStartsBehind() {
         ShadowFrustum frustum = standard(0.1);
-        frustum.setStarts(0, 0, 0, 0, 0, 0.1);
+        frustum.setOrigins(0, 0, 0, 0, 0, 0.1);
         int both = ShadowFrustum.ABOVE | ShadowFrustum.BELOW;
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a triangle of the surface (z = 0), between the starts: behind both
-        assertEquals(both, startsBehind(frustum, flat(0)), "TC01: the surface's triangle lies behind both starts");
+        assertEquals(both, originsBehind(frustum, flat(0)), "TC01: the surface's triangle lies behind both starts");
         // TC02: a slanted triangle within the slab (z from −0.05 to 0.05): behind both
-        assertEquals(both, startsBehind(frustum, -1, -1, -0.05, 1, -1, -0.05, 0, 1, 0.05),
+        assertEquals(both, originsBehind(frustum, -1, -1, -0.05, 1, -1, -0.05, 0, 1, 0.05),
                 "TC02: a triangle between the starts lies behind both");
         // TC03: a triangle below p − n (z = −0.5): behind p + n only
-        assertEquals(ShadowFrustum.ABOVE, startsBehind(frustum, flat(-0.5)), "TC03: below both starts: ABOVE");
+        assertEquals(ShadowFrustum.ABOVE, originsBehind(frustum, flat(-0.5)), "TC03: below both starts: ABOVE");
         // TC04: a triangle above p + n (z = 0.5): behind p − n only
-        assertEquals(ShadowFrustum.BELOW, startsBehind(frustum, flat(0.5)), "TC04: above both starts: BELOW");
+        assertEquals(ShadowFrustum.BELOW, originsBehind(frustum, flat(0.5)), "TC04: above both starts: BELOW");
         // TC05: a triangle crossing the surface from z = −1 to 1: behind neither
-        assertEquals(0, startsBehind(frustum, -1, -1, -1, 1, -1, -1, 0, 1, 1), "TC05: a crossing triangle: 0");
+        assertEquals(0, originsBehind(frustum, -1, -1, -1, 1, -1, -1, 0, 1, 1), "TC05: a crossing triangle: 0");
         // TC06: a triangle crossing only the plane of p + n (z from 0 to 0.2): behind p − n only
-        assertEquals(ShadowFrustum.BELOW, startsBehind(frustum, -1, -1, 0, 1, -1, 0, 0, 1, 0.2),
+        assertEquals(ShadowFrustum.BELOW, originsBehind(frustum, -1, -1, 0, 1, -1, 0, 0, 1, 0.2),
                 "TC06: crossing the plane of p + n: BELOW");
         // TC07: a slanted n, (0.06, 0, 0.08), and the plane 0.6x + 0.8z = 0 through p: behind both
         ShadowFrustum slant = standard(0.1);
-        slant.setStarts(0, 0, 0, 0.06, 0, 0.08);
-        assertEquals(both, startsBehind(slant, -0.8, -1, 0.6, 0.8, -1, -0.6, 0, 1, 0), "TC07: a slanted surface");
+        slant.setOrigins(0, 0, 0, 0.06, 0, 0.08);
+        assertEquals(both, originsBehind(slant, -0.8, -1, 0.6, 0.8, -1, -0.6, 0, 1, 0), "TC07: a slanted surface");
 
         // ===== Boundary Values Tests =====
         // TC11: a triangle in the plane of p + n (z = 0.1): not behind it, behind p − n
-        assertEquals(ShadowFrustum.BELOW, startsBehind(frustum, flat(0.1)), "TC11: in the plane of p + n");
+        assertEquals(ShadowFrustum.BELOW, originsBehind(frustum, flat(0.1)), "TC11: in the plane of p + n");
         // TC12: in the plane of p − n (z = −0.1): behind p + n only
-        assertEquals(ShadowFrustum.ABOVE, startsBehind(frustum, flat(-0.1)), "TC12: in the plane of p − n");
+        assertEquals(ShadowFrustum.ABOVE, originsBehind(frustum, flat(-0.1)), "TC12: in the plane of p − n");
         // TC13: 1e-6 behind p + n (within the margin 2.8e-6): not behind it; 1e-5 behind it: behind both
-        assertEquals(ShadowFrustum.BELOW, startsBehind(frustum, flat(0.1 - 1e-6)), "TC13: within the margin");
-        assertEquals(both, startsBehind(frustum, flat(0.1 - 1e-5)), "TC13: beyond the margin");
+        assertEquals(ShadowFrustum.BELOW, originsBehind(frustum, flat(0.1 - 1e-6)), "TC13: within the margin");
+        assertEquals(both, originsBehind(frustum, flat(0.1 - 1e-5)), "TC13: beyond the margin");
         // TC14: the same below p − n
-        assertEquals(ShadowFrustum.ABOVE, startsBehind(frustum, flat(-0.1 + 1e-6)), "TC14: within the margin");
-        assertEquals(both, startsBehind(frustum, flat(-0.1 + 1e-5)), "TC14: beyond the margin");
+        assertEquals(ShadowFrustum.ABOVE, originsBehind(frustum, flat(-0.1 + 1e-6)), "TC14: within the margin");
+        assertEquals(both, originsBehind(frustum, flat(-0.1 + 1e-5)), "TC14: beyond the margin");
         // TC15: a vertex 1e-4 behind p + n whose edges reach 1e5 down: the renderer's test grows it by
         // 1e-9 of its two edges, 2e-4 along n, past the start: behind neither (without the growth: ABOVE)
-        assertEquals(0, startsBehind(frustum, 0, 0, 0.1 - 1e-4, 1, 0, -1e5, 0, 1, -1e5),
+        assertEquals(0, originsBehind(frustum, 0, 0, 0.1 - 1e-4, 1, 0, -1e5, 0, 1, -1e5),
                 "TC15: a vertex grown past the start");
         // TC16: no starts set (a fresh set forgets them): 0 for every triangle
         frustum = standard(0.1);
-        assertEquals(0, startsBehind(frustum, flat(0)), "TC16: no starts after a new set");
-        assertEquals(0, startsBehind(new ShadowFrustum(), flat(-0.5)), "TC16: no starts ever set");
+        assertEquals(0, originsBehind(frustum, flat(0)), "TC16: no starts after a new set");
+        assertEquals(0, originsBehind(new ShadowFrustum(), flat(-0.5)), "TC16: no starts ever set");
     }
 
     /**
@@ -577,70 +577,70 @@ class ShadowFrustumTest {
      *
      * @param frustum the frustum
      * @param v       the vertices p1, p2, p3
-     * @return {@link ShadowFrustum#behindStarts} of them
+     * @return {@link ShadowFrustum#behindOrigins} of them
      */
-    private static boolean behindStarts(ShadowFrustum frustum, double... v) {
+    private static boolean behindOrigins(ShadowFrustum frustum, double... v) {
         double[] vertices = { 0, 0, 0, v[6], v[7], v[8], v[0], v[1], v[2], v[3], v[4], v[5] };
-        return frustum.behindStarts(vertices, 6, 9, 3);
+        return frustum.behindOrigins(vertices, 6, 9, 3);
     }
 
     /**
-     * Test method for {@link ShadowFrustum#behindStarts}: true only when a triangle lies behind both
-     * starts p ± n, as {@link ShadowFrustum#startsBehind} tells.
+     * Test method for {@link ShadowFrustum#behindOrigins}: true only when a triangle lies behind both
+     * starts p ± n, as {@link ShadowFrustum#originsBehind} tells.
      * <p>
      * The standard pyramid 0.1 thick, p = (0, 0, 0), n = (0, 0, 0.1): the starts are (0, 0, ±0.1).
      */
     @Test
     void testBehindStarts() {
         ShadowFrustum frustum = standard(0.1);
-        frustum.setStarts(0, 0, 0, 0, 0, 0.1);
+        frustum.setOrigins(0, 0, 0, 0, 0, 0.1);
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a triangle of the surface (z = 0) between the starts (expects true)
-        assertTrue(behindStarts(frustum, flat(0)), "TC01: the surface's triangle lies behind both starts");
+        assertTrue(behindOrigins(frustum, flat(0)), "TC01: the surface's triangle lies behind both starts");
         // TC02: a slanted triangle within the slab (z −0.05..0.05) (expects true)
-        assertTrue(behindStarts(frustum, -1, -1, -0.05, 1, -1, -0.05, 0, 1, 0.05), "TC02: within the slab");
+        assertTrue(behindOrigins(frustum, -1, -1, -0.05, 1, -1, -0.05, 0, 1, 0.05), "TC02: within the slab");
         // TC03: below p − n (z = −0.5), behind p + n only (expects false)
-        assertFalse(behindStarts(frustum, flat(-0.5)), "TC03: behind p + n only");
+        assertFalse(behindOrigins(frustum, flat(-0.5)), "TC03: behind p + n only");
         // TC04: above p + n (z = 0.5), behind p − n only (expects false)
-        assertFalse(behindStarts(frustum, flat(0.5)), "TC04: behind p − n only");
+        assertFalse(behindOrigins(frustum, flat(0.5)), "TC04: behind p − n only");
         // TC05: crossing the surface from z = −1 to 1 (expects false)
-        assertFalse(behindStarts(frustum, -1, -1, -1, 1, -1, -1, 0, 1, 1), "TC05: a crossing triangle");
+        assertFalse(behindOrigins(frustum, -1, -1, -1, 1, -1, -1, 0, 1, 1), "TC05: a crossing triangle");
         // TC06: crossing the plane of p + n only (z 0..0.2) (expects false)
-        assertFalse(behindStarts(frustum, -1, -1, 0, 1, -1, 0, 0, 1, 0.2), "TC06: crossing the plane of p + n");
+        assertFalse(behindOrigins(frustum, -1, -1, 0, 1, -1, 0, 0, 1, 0.2), "TC06: crossing the plane of p + n");
         // TC07: a slanted n (0.06, 0, 0.08), p = (1, 2, 3), a triangle of the plane 0.6x + 0.8z = 3.6 through p
         // (expects true); the same triangle moved 0.5 along n (expects false)
         ShadowFrustum slant = standard(0.1);
-        slant.setStarts(1, 2, 3, 0.06, 0, 0.08);
-        assertTrue(behindStarts(slant, 0.2, 1, 3.6, 1.8, 1, 2.4, 1, 3, 3), "TC07: a slanted surface");
-        assertFalse(behindStarts(slant, 0.5, 1, 4, 2.1, 1, 2.8, 1.3, 3, 3.4), "TC07: the slanted surface moved off");
+        slant.setOrigins(1, 2, 3, 0.06, 0, 0.08);
+        assertTrue(behindOrigins(slant, 0.2, 1, 3.6, 1.8, 1, 2.4, 1, 3, 3), "TC07: a slanted surface");
+        assertFalse(behindOrigins(slant, 0.5, 1, 4, 2.1, 1, 2.8, 1.3, 3, 3.4), "TC07: the slanted surface moved off");
 
         // ===== Boundary Values Tests =====
         // TC11: in the plane of p + n (z = 0.1) and of p − n (z = −0.1) (expects false)
-        assertFalse(behindStarts(frustum, flat(0.1)), "TC11: in the plane of p + n");
-        assertFalse(behindStarts(frustum, flat(-0.1)), "TC11: in the plane of p − n");
+        assertFalse(behindOrigins(frustum, flat(0.1)), "TC11: in the plane of p + n");
+        assertFalse(behindOrigins(frustum, flat(-0.1)), "TC11: in the plane of p − n");
         // TC12: 1e-6 inside the slab (within the rounding margin 2.8e-6) (expects false); 1e-5 inside (expects true)
-        assertFalse(behindStarts(frustum, flat(0.1 - 1e-6)), "TC12: within the margin of p + n");
-        assertFalse(behindStarts(frustum, flat(-0.1 + 1e-6)), "TC12: within the margin of p − n");
-        assertTrue(behindStarts(frustum, flat(0.1 - 1e-5)), "TC12: beyond the margin of p + n");
-        assertTrue(behindStarts(frustum, flat(-0.1 + 1e-5)), "TC12: beyond the margin of p − n");
+        assertFalse(behindOrigins(frustum, flat(0.1 - 1e-6)), "TC12: within the margin of p + n");
+        assertFalse(behindOrigins(frustum, flat(-0.1 + 1e-6)), "TC12: within the margin of p − n");
+        assertTrue(behindOrigins(frustum, flat(0.1 - 1e-5)), "TC12: beyond the margin of p + n");
+        assertTrue(behindOrigins(frustum, flat(-0.1 + 1e-5)), "TC12: beyond the margin of p − n");
         // TC13: a triangle across the slab, from z = −0.1 + 1e-5 to 0.1 − 1e-5 (expects true); reaching
         // within the margin of p − n, −0.1 + 1e-6 (expects false)
-        assertTrue(behindStarts(frustum, -1, -1, -0.1 + 1e-5, 1, -1, -0.1 + 1e-5, 0, 1, 0.1 - 1e-5),
+        assertTrue(behindOrigins(frustum, -1, -1, -0.1 + 1e-5, 1, -1, -0.1 + 1e-5, 0, 1, 0.1 - 1e-5),
                 "TC13: across the slab, beyond the margins");
-        assertFalse(behindStarts(frustum, -1, -1, -0.1 + 1e-6, 1, -1, -0.1 + 1e-5, 0, 1, 0.1 - 1e-5),
+        assertFalse(behindOrigins(frustum, -1, -1, -0.1 + 1e-6, 1, -1, -0.1 + 1e-5, 0, 1, 0.1 - 1e-5),
                 "TC13: across the slab, one vertex within the margin of p − n");
         // TC14: no starts ever set, and after a new set (expects false)
-        assertFalse(behindStarts(new ShadowFrustum(), flat(0)), "TC14: no starts ever set");
+        assertFalse(behindOrigins(new ShadowFrustum(), flat(0)), "TC14: no starts ever set");
         frustum = standard(0.1);
-        assertFalse(behindStarts(frustum, flat(0)), "TC14: a new set forgets the starts");
+        assertFalse(behindOrigins(frustum, flat(0)), "TC14: a new set forgets the starts");
         // TC15: starts set with n = 0 (expects false)
-        frustum.setStarts(0, 0, 0, 0, 0, 0);
-        assertFalse(behindStarts(frustum, flat(0)), "TC15: a zero offset sets no starts");
+        frustum.setOrigins(0, 0, 0, 0, 0, 0);
+        assertFalse(behindOrigins(frustum, flat(0)), "TC15: a zero offset sets no starts");
     }
 
     /**
-     * Test method for {@link ShadowFrustum#behindStarts} against {@link ShadowFrustum#startsBehind}
+     * Test method for {@link ShadowFrustum#behindOrigins} against {@link ShadowFrustum#originsBehind}
      * on seeded random starts and triangles: true exactly when the triangle lies behind both.
      */
     @Test
@@ -648,7 +648,7 @@ class ShadowFrustumTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: 200 random starts (p in [−20, 20]³, n of random direction and length 1e-3..1) × 50 random
         // triangles about p (vertices up to 1e-3..10 from p + a random height along n, heights mostly within
-        // the slab) (expects behindStarts == (startsBehind == ABOVE | BELOW) for every triangle)
+        // the slab) (expects behindOrigins == (originsBehind == ABOVE | BELOW) for every triangle)
         Random rnd = new Random(20261203);
         int both = ShadowFrustum.ABOVE | ShadowFrustum.BELOW;
         int[] kinds = new int[4];
@@ -657,7 +657,7 @@ class ShadowFrustumTest {
             double[] p = { 40 * rnd.nextDouble() - 20, 40 * rnd.nextDouble() - 20, 40 * rnd.nextDouble() - 20 };
             double[] n = strayVector(rnd, Math.pow(10, -3 + 3 * rnd.nextDouble()));
             double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-            frustum.setStarts(p[0], p[1], p[2], n[0], n[1], n[2]);
+            frustum.setOrigins(p[0], p[1], p[2], n[0], n[1], n[2]);
             for (int t = 0; t < 50; ++t) {
                 double size = Math.pow(10, -3 + 4 * rnd.nextDouble());
                 double[] v = new double[9];
@@ -669,51 +669,51 @@ class ShadowFrustumTest {
                     for (int k = 0; k < 3; ++k)
                         v[3 * i + k] = p[k] + height * n[k] + across[k] - along * n[k];
                 }
-                int behind = startsBehind(frustum, v);
+                int behind = originsBehind(frustum, v);
                 ++kinds[behind];
                 int number = t;
-                assertEquals(behind == both, behindStarts(frustum, v), () -> "TC01: starts p " + Arrays.toString(p)
+                assertEquals(behind == both, behindOrigins(frustum, v), () -> "TC01: starts p " + Arrays.toString(p)
                         + " n " + Arrays.toString(n) + ", triangle " + number + " " + Arrays.toString(v)
-                        + ": startsBehind " + behind);
+                        + ": originsBehind " + behind);
             }
         }
-        // every answer of startsBehind is common: the comparison is not vacuous
+        // every answer of originsBehind is common: the comparison is not vacuous
         for (int kind = 0; kind < 4; ++kind)
             assertTrue(kinds[kind] >= 500, "TC01: too few triangles behind starts " + kind + ": " + kinds[kind]);
     }
 
-    /** Test method for {@link ShadowFrustum#hasStarts}. */
+    /** Test method for {@link ShadowFrustum#hasOrigins}. */
     @Test
     void testHasStarts() {
         ShadowFrustum frustum = new ShadowFrustum();
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a new frustum (expects false)
-        assertFalse(frustum.hasStarts(), "TC01: a new frustum has no starts");
+        assertFalse(frustum.hasOrigins(), "TC01: a new frustum has no starts");
         // TC02: after set (expects false)
         assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC02: the pyramid must be set");
-        assertFalse(frustum.hasStarts(), "TC02: set gives no starts");
-        // TC03: setStarts with a non-zero n (expects true)
-        frustum.setStarts(1, 2, 3, 0, 0.1, 0);
-        assertTrue(frustum.hasStarts(), "TC03: setStarts with a non-zero offset");
-        // TC04: a new set after setStarts (expects false)
+        assertFalse(frustum.hasOrigins(), "TC02: set gives no starts");
+        // TC03: setOrigins with a non-zero n (expects true)
+        frustum.setOrigins(1, 2, 3, 0, 0.1, 0);
+        assertTrue(frustum.hasOrigins(), "TC03: setOrigins with a non-zero offset");
+        // TC04: a new set after setOrigins (expects false)
         assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC04: the pyramid must be set");
-        assertFalse(frustum.hasStarts(), "TC04: a new set forgets the starts");
+        assertFalse(frustum.hasOrigins(), "TC04: a new set forgets the starts");
 
         // ===== Boundary Values Tests =====
-        // TC11: setStarts with n = 0 (expects false), also right after a non-zero n
-        frustum.setStarts(1, 2, 3, 0, 0, 0);
-        assertFalse(frustum.hasStarts(), "TC11: a zero offset sets no starts");
-        frustum.setStarts(1, 2, 3, 0, 0, -0.1);
-        assertTrue(frustum.hasStarts(), "TC11: a non-zero offset sets starts");
-        frustum.setStarts(1, 2, 3, 0, 0, 0);
-        assertFalse(frustum.hasStarts(), "TC11: a zero offset takes the starts away");
+        // TC11: setOrigins with n = 0 (expects false), also right after a non-zero n
+        frustum.setOrigins(1, 2, 3, 0, 0, 0);
+        assertFalse(frustum.hasOrigins(), "TC11: a zero offset sets no starts");
+        frustum.setOrigins(1, 2, 3, 0, 0, -0.1);
+        assertTrue(frustum.hasOrigins(), "TC11: a non-zero offset sets starts");
+        frustum.setOrigins(1, 2, 3, 0, 0, 0);
+        assertFalse(frustum.hasOrigins(), "TC11: a zero offset takes the starts away");
         // TC12: the smallest non-zero n, one coordinate Double.MIN_VALUE (expects true)
-        frustum.setStarts(1, 2, 3, Double.MIN_VALUE, 0, 0);
-        assertTrue(frustum.hasStarts(), "TC12: a tiny offset still sets starts");
-        // TC13: a refused (flat) set after setStarts (expects false)
+        frustum.setOrigins(1, 2, 3, Double.MIN_VALUE, 0, 0);
+        assertTrue(frustum.hasOrigins(), "TC12: a tiny offset still sets starts");
+        // TC13: a refused (flat) set after setOrigins (expects false)
         assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC13: the flat pyramid must be refused");
-        assertFalse(frustum.hasStarts(), "TC13: a refused set forgets the starts too");
+        assertFalse(frustum.hasOrigins(), "TC13: a refused set forgets the starts too");
     }
 
     /** Test method for {@link ShadowFrustum#meetsPlane}. */
@@ -1176,12 +1176,12 @@ class ShadowFrustumTest {
      * @param frustum the frustum
      * @param ball    the mesh's inner ball
      * @param box     the mesh's box, {minX, minY, minZ, maxX, maxY, maxZ}
-     * @return {@link ShadowFrustum#crossesSolid}'s answer
+     * @return {@link ShadowFrustum#crossesClosedMesh}'s answer
      */
     private static boolean crosses(ShadowFrustum frustum, InnerBall ball, double... box) {
         double[] boxes = { -50, -50, -50, 50, 50, 50, 0, 0, 0, 0, 0, 0 };
         System.arraycopy(box, 0, boxes, 6, 6);
-        return frustum.crossesSolid(ball, boxes, 6);
+        return frustum.crossesClosedMesh(ball, boxes, 6);
     }
 
     /**
@@ -1197,7 +1197,7 @@ class ShadowFrustumTest {
     }
 
     /**
-     * Test method for {@link ShadowFrustum#crossesSolid}, {@link ShadowFrustum#sectionInside} and
+     * Test method for {@link ShadowFrustum#crossesClosedMesh}, {@link ShadowFrustum#sectionInside} and
      * {@link ShadowFrustum#baseOutside} on the standard pyramid, whose cross-section at height z is the
      * square of half-side z/5: at z = 5 (λ = ½) its corners (±1, ±1, 5) lie √2 from the axis. The balls
      * are the inner balls of cubes (a cube of half-side h: radius h less 1e-6 of it and a rounding).
@@ -1292,7 +1292,7 @@ class ShadowFrustumTest {
     }
 
     /**
-     * Test method for {@link ShadowFrustum#crossesSolid} on seeded random pyramids, thin and thick, and
+     * Test method for {@link ShadowFrustum#crossesClosedMesh} on seeded random pyramids, thin and thick, and
      * balls about their axes: when it says a bundle crosses a ball, each of 200 segments the bundle's
      * rays may cover (from the apex to the base, each end moved by up to the thickness) passes through
      * the ball's inside ({@link InnerBall#crossedBy}) and ends outside the box, and so do the rays along

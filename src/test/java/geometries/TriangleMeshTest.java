@@ -24,7 +24,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.function.Executable;
 
-import accel.BoundingVolumeHierarchy.Query;
+import accel.Query;
 import geometries.Intersectable.GeoPoint;
 import geometries.TriangleMesh.MeshPoint;
 import lighting.PointLight;

@@ -17,7 +17,7 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
-import accel.BoundingVolumeHierarchy.Query;
+import accel.Query;
 import geometries.Intersectable.GeoPoint;
 import primitives.Point3D;
 import primitives.Ray;

@@ -1,0 +1,223 @@
+package accel;
+
+import geometries.Geometry;
+import geometries.Triangle;
+import geometries.TriangleMesh;
+import java.util.stream.IntStream;
+
+/**
+ * The gather of a bundle of shadow rays: the tree is walked once with the bundle's pyramid (a
+ * {@link ShadowFrustum}), keeping the few bodies that may meet it, or their smallest subtree when
+ * they are many; then each ray of the bundle is tested against those alone.
+ */
+final class BundleGather {
+    /** The places of all gathered bodies, in order. */
+    private static final int[] ALL_GATHERED = IntStream.range(0, Query.MAX_GATHERED).toArray();
+
+    private final BvhNodes nodes;
+    private final LeafBodies bodies;
+    private final ClosedMeshBlockers blockers;
+    private final TransmittanceWalk walk;
+    /** Whether the gather culls bodies: false for the brute-force scan. */
+    private final boolean culling;
+
+    BundleGather(BvhNodes nodes, LeafBodies bodies, ClosedMeshBlockers blockers, TransmittanceWalk walk,
+                 boolean culling) {
+        this.nodes = nodes;
+        this.bodies = bodies;
+        this.blockers = blockers;
+        this.walk = walk;
+        this.culling = culling;
+    }
+
+    /**
+     * Gathers the bodies the query's bundle may meet (see {@link BoundingVolumeHierarchy#gather}).
+     *
+     * @param query this thread's scratch space, its frustum set to the bundle's pyramid
+     * @return false when no ray of the bundle can meet anything
+     */
+    boolean gather(Query query) {
+        ShadowFrustum frustum = query.frustum;
+        int found = 0;
+        for (Geometry body : bodies.unbounded)
+            if (!culling || body.mayMeet(frustum))
+                query.gatheredUnbounded[found++] = body;
+        query.unboundedCount = found;
+        query.blockerCount = 0;
+        query.blockersTried = false;
+        query.blocked = false;
+        query.gatheredCount = 0;
+        query.originCounts[ShadowFrustum.ABOVE] = 0;
+        query.originCounts[ShadowFrustum.BELOW] = 0;
+        if (nodes.count > 0 && frustum.meetsBox(nodes.bounds, 0))
+            gatherTree(query);
+        return found > 0 || query.gatheredCount != 0 || bodies.others.length > 0 || frustum.leftBehindOrigins()
+                || query.blocked;
+    }
+
+    /**
+     * Walks the nodes whose boxes meet the frustum and gathers the bodies of their leaves, or when
+     * they are too many, the node where the walk first had to enter both children.
+     */
+    private void gatherTree(Query query) {
+        ShadowFrustum frustum = query.frustum;
+        float[] bounds = nodes.bounds;
+        int[] links = nodes.links;
+        int[] stack = query.stack;
+        int top = 0;
+        int node = 0;
+        int subtree = 0;
+        boolean branched = false;
+        while (true) {
+            int first = links[2 * node];
+            int count = links[2 * node + 1];
+            if (!branched) // still on the one path from the root
+                subtree = node;
+            if (count < 0) {
+                boolean leftMeets = frustum.meetsBox(bounds, 6 * first);
+                boolean rightMeets = frustum.meetsBox(bounds, 6 * first + 6);
+                if (leftMeets || rightMeets) {
+                    if (leftMeets && rightMeets) {
+                        stack[top++] = first + 1;
+                        branched = true;
+                    }
+                    node = leftMeets ? first : first + 1;
+                    continue;
+                }
+            } else if (!gatherLeaf(query, first, count)) {
+                if (!query.blocked) {
+                    query.gatheredCount = -1;
+                    query.subtree = subtree;
+                }
+                return;
+            }
+            if (top == 0)
+                return;
+            node = stack[--top];
+        }
+    }
+
+    /**
+     * Adds a leaf's bodies that may meet the frustum ({@link LeafBodies#meets}), a mesh's triangle
+     * with the numbers of its test; false when there is no room for them, or when the closed meshes,
+     * tried at the first body found, block the bundle.
+     */
+    private boolean gatherLeaf(Query query, int first, int count) {
+        ShadowFrustum frustum = query.frustum;
+        for (int b = first; b < first + count; ++b)
+            if (bodies.meets(frustum, b)) {
+                if (!query.blockersTried && blockers.tryOn(query))
+                    return false;
+                int slot = query.gatheredCount;
+                if (slot == Query.MAX_GATHERED)
+                    return false;
+                int part = bodies.bodyPart[b];
+                int d = Query.GATHERED_TRIANGLE * slot;
+                if (part >= 0) {
+                    TriangleMesh mesh = (TriangleMesh) bodies.owner(b);
+                    mesh.triangleData(part, query.gatheredTriangles, d);
+                    query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA] = mesh.getMaterial().getKt();
+                }
+                query.gathered[slot] = part >= 0 ? -1 : b;
+                query.gatheredCount = slot + 1;
+                if (frustum.hasOrigins())
+                    listByOrigins(query, slot, part >= 0 ? frustum.originsBehind(query.gatheredTriangles, d) : 0);
+            }
+        return true;
+    }
+
+    /**
+     * Lists a gathered body for the rays from each origin it does not lie behind.
+     *
+     * @param slot   its place among the gathered bodies
+     * @param behind the origins it lies behind, as {@link ShadowFrustum#originsBehind} tells
+     */
+    private static void listByOrigins(Query query, int slot, int behind) {
+        for (int origin = ShadowFrustum.ABOVE; origin <= ShadowFrustum.BELOW; ++origin)
+            if ((behind & origin) == 0)
+                query.originLists[origin][query.originCounts[origin]++] = slot;
+    }
+
+    /**
+     * The transmittance of a ray of the bundle of the last gather (see
+     * {@link BoundingVolumeHierarchy#bundleRayTransmittance}).
+     *
+     * @param query this thread's scratch space, as the last gather left it
+     * @param ray   the ray
+     * @param minK  below this product the answer is 0
+     * @return the transparency in [0, 1]
+     */
+    double rayTransmittance(Query query, RayState ray, double minK) {
+        if (query.blocked)
+            return 0;
+        return query.frustum.hasOrigins() ? fromOrigin(query, ray, minK) : throughBundle(query, ray, 0, minK);
+    }
+
+    /**
+     * {@link #rayTransmittance} when the frustum's ray origins are set: a ray from neither origin is
+     * traced alone through the whole hierarchy, as the gather left out bodies only the rays from the
+     * origins miss.
+     */
+    private double fromOrigin(Query query, RayState ray, double minK) {
+        int origin = query.frustum.originOf(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz);
+        return origin == 0 ? walk.transmittance(query, ray, minK) : throughBundle(query, ray, origin, minK);
+    }
+
+    /**
+     * The transparency along a ray of the bundle from an origin through what the last gather found:
+     * the unbounded bodies, the gathered ones and the intersectables that are not geometries.
+     *
+     * @param origin where the ray starts, as the frustum's {@link ShadowFrustum#originOf} tells (0
+     *               when no origins are set)
+     */
+    private double throughBundle(Query query, RayState ray, int origin, double minK) {
+        if (!throughGatheredUnbounded(query, ray, minK) || !throughGathered(query, ray, origin))
+            return 0;
+        return bodies.throughOthers(ray, ray.ktr);
+    }
+
+    /**
+     * Starts the ray's transmittance and attenuates it by the gathered unbounded bodies.
+     *
+     * @return false when they block the ray; else the ray's ktr holds their transparency
+     */
+    static boolean throughGatheredUnbounded(Query query, RayState ray, double minK) {
+        ray.startTransmittance(minK);
+        for (int i = 0; i < query.unboundedCount; ++i)
+            if (!ray.attenuateBy(query.gatheredUnbounded[i]))
+                return false;
+        return true;
+    }
+
+    /**
+     * Attenuates the ray by the gathered bodies: the kept subtree, walked, or the bodies a ray from
+     * its origin tests (every gathered body when no origins are set).
+     *
+     * @param origin where the ray starts, as the frustum's {@link ShadowFrustum#originOf} tells
+     * @return false when they block the ray
+     */
+    private boolean throughGathered(Query query, RayState ray, int origin) {
+        if (query.gatheredCount < 0)
+            return walk.walk(query, ray, query.subtree);
+        int[] list = origin == 0 ? ALL_GATHERED : query.originLists[origin];
+        int count = origin == 0 ? query.gatheredCount : query.originCounts[origin];
+        for (int k = 0; k < count; ++k)
+            if (!visitGathered(query, ray, list[k]))
+                return false;
+        return true;
+    }
+
+    /**
+     * Attenuates the ray by the body at place i of the query's gathered ones: a mesh's triangle is
+     * tested on the numbers {@link #gatherLeaf} kept, the same as the mesh's.
+     */
+    private boolean visitGathered(Query query, RayState ray, int i) {
+        int b = query.gathered[i];
+        if (b >= 0)
+            return ray.attenuateBy(bodies.owner(b));
+        double[] data = query.gatheredTriangles;
+        int d = Query.GATHERED_TRIANGLE * i;
+        return Triangle.intersect(data, d, ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT) == Geometry.NO_HIT
+                || ray.attenuate(data[d + TriangleMesh.TRIANGLE_DATA]);
+    }
+}

@@ -1,0 +1,253 @@
+package accel;
+
+import geometries.Geometry;
+import geometries.Triangle;
+import geometries.TriangleMesh;
+
+/**
+ * The shadow rays of a bundle traced together, as a packet, through the subtree the gather kept:
+ * each node is visited once for all of them, and a leaf's bodies are tested on the rays that meet
+ * its box.
+ */
+final class PacketWalk {
+    private final BvhNodes nodes;
+    private final LeafBodies bodies;
+    private final ClosedMeshBlockers blockers;
+    private final BundleGather gather;
+
+    PacketWalk(BvhNodes nodes, LeafBodies bodies, ClosedMeshBlockers blockers, BundleGather gather) {
+        this.nodes = nodes;
+        this.bodies = bodies;
+        this.blockers = blockers;
+        this.gather = gather;
+    }
+
+    /**
+     * Traces every ray of the query's packet (see {@link BoundingVolumeHierarchy#packetTransmittances}).
+     *
+     * @param query this thread's scratch space, as the last gather left it, its packet filled
+     * @param minK  below this product a ray's answer is 0
+     */
+    void transmittances(Query query, double minK) {
+        RayState[] rays = query.packet.rays;
+        int n = query.packet.size;
+        if (query.blocked) {
+            for (int r = 0; r < n; ++r)
+                rays[r].ktr = 0;
+            return;
+        }
+        if (query.gatheredCount >= 0) {
+            for (int r = 0; r < n; ++r)
+                rays[r].ktr = gather.rayTransmittance(query, rays[r], minK);
+            return;
+        }
+        int active = 0;
+        for (int r = 0; r < n; ++r) {
+            RayState ray = rays[r];
+            if (!BundleGather.throughGatheredUnbounded(query, ray, minK))
+                ray.ktr = 0;
+            if (ray.ktr > 0)
+                ++active;
+        }
+        active -= blockers.blockPacket(query);
+        if (active > 0)
+            walk(query, active);
+        for (int r = 0; r < n; ++r)
+            if (rays[r].ktr > 0)
+                rays[r].ktr = bodies.throughOthers(rays[r], rays[r].ktr);
+    }
+
+    /**
+     * Walks the subtree the last gather kept with the packet's rays still unblocked: a node is
+     * visited with the first and the last of them that meet its box (the rays before the first and
+     * after the last do not), a child's looked for between its parent's (a child's box lies inside its
+     * parent's: the same numbers or nearer in, so a ray that misses the parent misses the child), and
+     * children are entered nearer first by the first ray's direction. A leaf lists the rays between
+     * them that meet its box and tests its bodies on them ({@link #leaf}).
+     *
+     * @param active the number of unblocked rays
+     */
+    private void walk(Query query, int active) {
+        Packet packet = query.packet;
+        RayState[] rays = packet.rays;
+        int n = packet.size;
+        for (int r = 0; r < n; ++r)
+            rays[r].invert();
+        int[] links = nodes.links;
+        int node = query.subtree;
+        int first = firstRayMeeting(packet, node, 0, n - 1);
+        int last = lastRayMeeting(packet, node, first, n - 1);
+        int[] stack = query.stack;
+        int[] firstRays = packet.firstRays;
+        int[] lastRays = packet.lastRays;
+        int top = 0;
+        while (first < n) {
+            int link = links[2 * node];
+            int count = links[2 * node + 1];
+            if (count < 0) {
+                int near = link + (rays[first].negative >> (-1 - count) & 1);
+                int far = 2 * link + 1 - near;
+                int nearFirst = packetMeets(query, near, first, last);
+                int farFirst = packetMeets(query, far, first, last);
+                if (nearFirst < n) {
+                    if (farFirst < n) {
+                        stack[top] = far;
+                        firstRays[top] = farFirst;
+                        lastRays[top++] = last;
+                    }
+                    node = near;
+                    first = nearFirst;
+                    last = lastRayMeeting(packet, node, first, last);
+                    continue;
+                }
+                if (farFirst < n) {
+                    node = far;
+                    first = farFirst;
+                    last = lastRayMeeting(packet, node, first, last);
+                    continue;
+                }
+            } else {
+                active -= leaf(packet, link, count, raysMeeting(packet, node, first, last));
+                if (active == 0)
+                    return;
+            }
+            first = n;
+            while (top > 0 && first == n) {
+                node = stack[--top];
+                last = lastRays[top];
+                first = rays[firstRays[top]].ktr > 0 ? firstRays[top]
+                        : firstRayMeeting(packet, node, firstRays[top], last);
+                if (first < n)
+                    last = lastRayMeeting(packet, node, first, last);
+            }
+        }
+    }
+
+    /** The first unblocked ray of rays [from, to] that meets a node's box, n when none does or the pyramid misses it. */
+    private int packetMeets(Query query, int node, int from, int to) {
+        return query.frustum.meetsBox(nodes.bounds, 6 * node) ? firstRayMeeting(query.packet, node, from, to)
+                : query.packet.size;
+    }
+
+    /** The first unblocked ray of rays [from, to] that meets a node's box, or the packet's size when none does. */
+    private int firstRayMeeting(Packet packet, int node, int from, int to) {
+        for (int r = from; r <= to; ++r)
+            if (meets(packet.rays[r], node))
+                return r;
+        return packet.size;
+    }
+
+    /** The last unblocked ray of rays (from, to] that meets an inner node's box, else from; to for a leaf. */
+    private int lastRayMeeting(Packet packet, int node, int from, int to) {
+        if (nodes.links[2 * node + 1] >= 0)
+            return to;
+        for (int r = to; r > from; --r)
+            if (meets(packet.rays[r], node))
+                return r;
+        return from;
+    }
+
+    /**
+     * Lists in {@link Packet#leafRays} ray first and the unblocked rays after it up to ray last that
+     * meet a leaf's box, in order.
+     *
+     * @return the list's length
+     */
+    private int raysMeeting(Packet packet, int node, int first, int last) {
+        int[] list = packet.leafRays;
+        int count = 0;
+        list[count++] = first;
+        for (int r = first + 1; r <= last; ++r)
+            if (meets(packet.rays[r], node))
+                list[count++] = r;
+        return count;
+    }
+
+    /** Whether a ray of the packet is unblocked and meets a node's box before its distance. */
+    private boolean meets(RayState ray, int node) {
+        return ray.ktr > 0 && nodes.entry(node, ray, ray.maxT) != RayState.MISSED;
+    }
+
+    /**
+     * Tests a leaf's bodies on the rays listed in {@link Packet#leafRays}, all of which meet its box:
+     * body after body, each on the rays not blocked yet, so each ray meets the bodies in their order
+     * and stops at the body that blocks it, as alone. The list keeps the rays still unblocked.
+     *
+     * @param firstBody the leaf's first body
+     * @param bodyCount its body count
+     * @param count     the list's length
+     * @return the number of rays the leaf blocked
+     */
+    private int leaf(Packet packet, int firstBody, int bodyCount, int count) {
+        int left = count;
+        for (int b = firstBody; b < firstBody + bodyCount && left > 0; ++b) {
+            int part = bodies.bodyPart[b];
+            Geometry owner = bodies.owner(b);
+            left = part < 0 ? bodyOnPacket(packet, owner, left)
+                    : triangleOnPacket(packet, (TriangleMesh) owner, part, left);
+        }
+        return count - left;
+    }
+
+    /**
+     * Tests a body (not a mesh's triangle) on the rays listed in {@link Packet#leafRays} through its
+     * own {@link Geometry#transmittance}, keeping those it does not block.
+     *
+     * @param count the list's length
+     * @return the number of rays kept
+     */
+    private static int bodyOnPacket(Packet packet, Geometry body, int count) {
+        int[] list = packet.leafRays;
+        int kept = 0;
+        for (int i = 0; i < count; ++i) {
+            int r = list[i];
+            if (through(packet.rays[r], packet.rays[r].attenuateBy(body)))
+                list[kept++] = r;
+        }
+        return kept;
+    }
+
+    /**
+     * Tests a mesh's triangle on the rays listed in {@link Packet#leafRays}, its data read once from
+     * the mesh, keeping the rays it does not block: a ray it meets is attenuated by the mesh's
+     * {@code kT}.
+     *
+     * @param part  the triangle in its mesh
+     * @param count the list's length
+     * @return the number of rays kept
+     */
+    private static int triangleOnPacket(Packet packet, TriangleMesh mesh, int part, int count) {
+        double[] data = packet.triangle;
+        mesh.triangleData(part, data, 0);
+        // in locals, read once per leaf, not from the array for each ray
+        double p1x = data[0];
+        double p1y = data[1];
+        double p1z = data[2];
+        double e1x = data[3];
+        double e1y = data[4];
+        double e1z = data[5];
+        double e2x = data[6];
+        double e2y = data[7];
+        double e2z = data[8];
+        double limit = data[9];
+        double kT = mesh.getMaterial().getKt();
+        int[] list = packet.leafRays;
+        RayState[] rays = packet.rays;
+        int kept = 0;
+        for (int i = 0; i < count; ++i) {
+            int r = list[i];
+            RayState ray = rays[r];
+            if (Triangle.intersect(p1x, p1y, p1z, e1x, e1y, e1z, e2x, e2y, e2z, limit, ray.ox, ray.oy, ray.oz,
+                    ray.dx, ray.dy, ray.dz, ray.maxT) == Geometry.NO_HIT || through(ray, ray.attenuate(kT)))
+                list[kept++] = r;
+        }
+        return kept;
+    }
+
+    /** Sets a packet's ray's transmittance to 0 once it is blocked; {@return whether it was not} */
+    private static boolean through(RayState ray, boolean through) {
+        if (!through)
+            ray.ktr = 0;
+        return through;
+    }
+}

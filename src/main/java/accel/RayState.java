@@ -1,0 +1,157 @@
+package accel;
+
+import geometries.Geometry;
+
+/**
+ * One ray's numbers for a walk of the hierarchy: its origin, unit direction, the direction's inverse
+ * and sign bits (set by {@link #invert}, for the slab test), the distance that counts, and the running
+ * answer: the closest hit so far, or the transmittance so far and the product below which it is 0.
+ */
+public final class RayState {
+    /** What {@link #boxEntry} answers for a ray that misses the box: no entry distance is negative. */
+    public static final double MISSED = -1;
+
+    double ox;
+    double oy;
+    double oz;
+    double dx;
+    double dy;
+    double dz;
+    double ix;
+    double iy;
+    double iz;
+    /** The axes along which the ray goes backwards: bit 0 for x, 1 for y, 2 for z. */
+    int negative;
+    /** The distance that counts: in a closest-hit walk, the nearest hit so far. */
+    double maxT;
+    /** Below this transmittance the answer is 0. */
+    double minK;
+    /** The transmittance so far. */
+    double ktr;
+    /** The body of the closest hit so far, or null. */
+    Geometry geometry;
+    /** The part of {@link #geometry} hit (a mesh's triangle), or −1. */
+    int part;
+
+    /**
+     * Sets the ray.
+     *
+     * @param ox   the origin, x
+     * @param oy   the origin, y
+     * @param oz   the origin, z
+     * @param dx   the unit direction, x
+     * @param dy   the unit direction, y
+     * @param dz   the unit direction, z
+     * @param maxT the distance that counts
+     * @return this ray
+     */
+    public RayState set(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        this.ox = ox;
+        this.oy = oy;
+        this.oz = oz;
+        this.dx = dx;
+        this.dy = dy;
+        this.dz = dz;
+        this.maxT = maxT;
+        return this;
+    }
+
+    /**
+     * Sets the inverse of the direction and its sign bits, for {@link #boxEntry}.
+     *
+     * @return this ray
+     */
+    public RayState invert() {
+        ix = 1 / dx;
+        iy = 1 / dy;
+        iz = 1 / dz;
+        negative = (dx < 0 ? 1 : 0) | (dy < 0 ? 2 : 0) | (dz < 0 ? 4 : 0);
+        return this;
+    }
+
+    /**
+     * Where the ray enters a box between its origin and a distance, or {@link #MISSED}: the slab test
+     * ({@link #slabEntry}) on the box's numbers. Needs {@link #invert}.
+     *
+     * @param box  the boxes: x0, y0, z0, x1, y1, z1 each
+     * @param b    where the box lies in it
+     * @param maxT the largest distance that counts
+     * @return the distance (0 or more) where the ray enters the box, or {@link #MISSED}
+     */
+    public double boxEntry(double[] box, int b, double maxT) {
+        return slabEntry(box[b], box[b + 1], box[b + 2], box[b + 3], box[b + 4], box[b + 5], maxT);
+    }
+
+    /** {@link #boxEntry(double[], int, double)} for boxes in floats (a node's). */
+    double boxEntry(float[] box, int b, double maxT) {
+        return slabEntry(box[b], box[b + 1], box[b + 2], box[b + 3], box[b + 4], box[b + 5], maxT);
+    }
+
+    /**
+     * Where the ray enters a box [x0, x1] × [y0, y1] × [z0, z1] between its origin and maxT (the slab
+     * test), or {@link #MISSED} when it does not meet the box there. Each slab is entered at its near
+     * face (the low one for a positive direction component, so for +0.0, and the high one for a
+     * negative component, so for −0.0) and left at the far one. A direction component of ±0 makes the
+     * inverse ±∞: a ray outside the slab then gets an empty interval, one inside it (−∞, +∞), and one
+     * lying exactly in a face's plane gets 0·∞ = NaN there, which the comparisons below skip, so the
+     * slab (closed) does not restrict the interval. Small enough for the JIT to inline into every walk.
+     */
+    private double slabEntry(double x0, double y0, double z0, double x1, double y1, double z1, double maxT) {
+        double ix = this.ix;
+        double iy = this.iy;
+        double iz = this.iz;
+        double near = ((ix < 0 ? x1 : x0) - ox) * ix;
+        double far = ((ix < 0 ? x0 : x1) - ox) * ix;
+        near = near > 0 ? near : 0;
+        far = far < maxT ? far : maxT;
+        double lo = ((iy < 0 ? y1 : y0) - oy) * iy;
+        double hi = ((iy < 0 ? y0 : y1) - oy) * iy;
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        lo = ((iz < 0 ? z1 : z0) - oz) * iz;
+        hi = ((iz < 0 ? z0 : z1) - oz) * iz;
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        return near <= far ? near : MISSED;
+    }
+
+    /**
+     * Starts a transmittance: 1 so far.
+     *
+     * @param minK below this product the answer is 0
+     */
+    void startTransmittance(double minK) {
+        this.minK = minK;
+        this.ktr = 1;
+    }
+
+    /** Multiplies the transmittance by a factor; false once the light is blocked (below minK or 0). */
+    boolean attenuate(double factor) {
+        ktr *= factor;
+        return ktr > 0 && ktr >= minK;
+    }
+
+    /**
+     * Multiplies the transmittance by a body's transparency along the ray up to its distance.
+     *
+     * @return false once the light is blocked (below minK or 0)
+     */
+    boolean attenuateBy(Geometry body) {
+        return attenuate(body.transmittance(ox, oy, oz, dx, dy, dz, maxT));
+    }
+
+    /** Starts a closest-hit query: nothing hit yet, up to {@link Geometry#NO_HIT}. */
+    void startClosestHit() {
+        maxT = Geometry.NO_HIT;
+        geometry = null;
+    }
+
+    /** Keeps a body (and its part, or −1) hit at distance t when it is nearer than the nearest so far. */
+    void keepNearer(double t, Geometry body, int part) {
+        if (t < maxT) {
+            maxT = t;
+            geometry = body;
+            this.part = part;
+        }
+    }
+}
