@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 
+import accel.BoundingVolumeHierarchy;
 import primitives.Ray;
 
 /**
@@ -15,6 +16,8 @@ public class Geometries extends Intersectable {
     private final List<Geometries> composites = new ArrayList<>();
     /** How many times objects were added to this composite itself. */
     private long additions;
+    /** The renderer's hierarchy over the bodies, as they were when it was built (see {@link #hierarchy}). */
+    private BoundingVolumeHierarchy hierarchy;
 
     /**
      * Creates a composite holding the given objects.
@@ -57,6 +60,23 @@ public class Geometries extends Intersectable {
         for (Geometries composite : composites)
             version += composite.version();
         return version;
+    }
+
+    /**
+     * The renderer's bounding volume hierarchy over the bodies, kept with them so that every ray
+     * tracer of the scene shares it (a course test makes a new tracer for every picture): built on
+     * the first call, and again only when bodies were added since (see {@link #version()}).
+     *
+     * @param threads how many threads may share a build, 1 or more
+     * @return the hierarchy over the bodies as they are now
+     * @throws IllegalArgumentException when threads is below 1
+     */
+    public synchronized BoundingVolumeHierarchy hierarchy(int threads) {
+        if (threads < 1)
+            throw new IllegalArgumentException("threads must be 1 or more, got " + threads);
+        if (hierarchy == null || !hierarchy.isBuiltFrom(this))
+            hierarchy = BoundingVolumeHierarchy.build(this, threads);
+        return hierarchy;
     }
 
     /** {@return the objects held, as an unmodifiable list} */

@@ -63,16 +63,16 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     /**
-     * Builds the bounding volume hierarchy over the scene's bodies on up to a number of threads,
-     * unless it was built over them as they are now: the scene's composite is the same object and
-     * no body was added to it (or to a composite in it) since.
+     * Takes the bounding volume hierarchy over the scene's bodies, built on up to a number of threads
+     * unless it was built over them as they are now (the scene's composite keeps it, see
+     * {@link geometries.Geometries#hierarchy}, so a new tracer over an unchanged scene builds nothing).
      */
     @Override
     protected synchronized void prepare(int threads) {
         BoundingVolumeHierarchy bvh = accelerator;
         if (bvh == null || !bvh.isBuiltFrom(scene.geometries))
             accelerator = bruteForce ? BoundingVolumeHierarchy.scan(scene.geometries)
-                    : BoundingVolumeHierarchy.build(scene.geometries, threads);
+                    : scene.geometries.hierarchy(threads);
     }
 
     /**

@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -12,6 +13,7 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
+import accel.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
 import primitives.Point3D;
 import primitives.Ray;
@@ -201,5 +203,37 @@ class GeometriesTest {
         assertTrue(twice > before, "TC11: nesting a composite must raise the version");
         inner.add(sphere);
         assertTrue(outer.version() > twice, "TC11: adding to a composite nested twice must raise the version");
+    }
+
+    /** Test method for {@link geometries.Geometries#hierarchy(int)}: built once, shared, built again after an addition. */
+    @Test
+    void testHierarchy() {
+        Geometries inner = new Geometries(sphere);
+        Geometries outer = new Geometries(inner, plane);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: asked twice (on 2 threads, then 1) with nothing added: the same hierarchy, over 1 bounded body
+        BoundingVolumeHierarchy first = outer.hierarchy(2);
+        assertSame(first, outer.hierarchy(1), "TC01: an unchanged composite must keep its hierarchy");
+        assertEquals(1, first.getBoundedCount(), "TC01: the sphere is the one bounded body");
+        // TC02: a body added to the composite itself: a new hierarchy, over 2 bounded bodies
+        outer.add(triangle);
+        BoundingVolumeHierarchy second = outer.hierarchy(1);
+        assertNotSame(first, second, "TC02: adding to the composite must build again");
+        assertEquals(2, second.getBoundedCount(), "TC02: the sphere and the triangle are bounded");
+        // TC03: a body added to a nested composite: a new hierarchy, over 3 bounded bodies
+        inner.add(new Sphere(new Point3D(5, 0, 0), 1));
+        BoundingVolumeHierarchy third = outer.hierarchy(1);
+        assertNotSame(second, third, "TC03: adding to a nested composite must build again");
+        assertEquals(3, third.getBoundedCount(), "TC03: both spheres and the triangle are bounded");
+
+        // ===== Boundary Values Tests =====
+        // TC11: an empty composite: a hierarchy of 0 nodes, kept
+        Geometries empty = new Geometries();
+        assertEquals(0, empty.hierarchy(1).getNodesCount(), "TC11: an empty composite has no nodes");
+        assertSame(empty.hierarchy(1), empty.hierarchy(1), "TC11: an empty composite keeps its hierarchy");
+        // TC12: 0 threads: refused, naming the threads
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> outer.hierarchy(0), "TC12: 0 threads"),
+                "threads", "TC12");
     }
 }

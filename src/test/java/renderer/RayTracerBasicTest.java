@@ -119,6 +119,11 @@ class RayTracerBasicTest {
         BoundingVolumeHierarchy built = lazy.accelerator();
         lazy.prepare(2);
         assertSame(built, lazy.accelerator(), "TC11: the hierarchy built on first use is up to date");
+        // TC12: a new tracer over the unchanged scene (a course test's new tracer per picture): the same hierarchy
+        RayTracerBasic next = new RayTracerBasic(scene);
+        next.prepare(2);
+        assertSame(built, next.accelerator(), "TC12: a new tracer over an unchanged scene must not build again");
+        assertColor(red, next.traceRay(RAY_DOWN), "TC12: the new tracer sees the sphere");
     }
 
     /** Test method for {@link RayTracerBasic#traceRay(Ray)}: the Phong diffuse and specular terms. */
