@@ -2,13 +2,15 @@ package accel;
 
 import geometries.Geometry;
 import geometries.TriangleMesh;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
+import java.util.List;
 
 import primitives.Parallel;
 
 /**
- * The tree's closed opaque meshes as blockers of whole bundles: a mesh whose inner ball
+ * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part whose inner ball
  * ({@link InnerBall}) lies across every ray of a bundle blocks the bundle at the gather, and a
  * packet's ray through such a ball is blocked before the walk.
  */
@@ -16,7 +18,10 @@ final class ClosedMeshBlockers {
     /** The most closed meshes whose inner balls the gather tries: those of the largest balls. */
     static final int MAX_BLOCKERS = 16;
 
-    /** The tree's closed meshes that have an inner ball, the largest balls first, their balls and their boxes. */
+    /**
+     * The closed parts of the tree's meshes that have an inner ball ({@link ClosedParts}), the largest
+     * balls first: each part's mesh (whose material says whether it is opaque), its ball and its box.
+     */
     private final TriangleMesh[] meshes;
     private final InnerBall[] balls;
     private final double[] boxes;
@@ -25,30 +30,30 @@ final class ClosedMeshBlockers {
      * Finds the blockers among the tree's geometries.
      *
      * @param owners  the tree's geometries (none for a brute-force scan)
-     * @param threads the number of threads the meshes look for their balls on
+     * @param threads the number of threads the meshes look for their closed parts on
      */
     ClosedMeshBlockers(Geometry[] owners, int threads) {
-        this.meshes = closedMeshesOf(owners, threads);
-        this.balls = new InnerBall[meshes.length];
-        this.boxes = new double[6 * meshes.length];
-        for (int s = 0; s < meshes.length; ++s) {
-            balls[s] = meshes[s].innerBall();
-            meshes[s].bounds(boxes, 6 * s);
+        TriangleMesh[] all = Arrays.stream(owners).filter(TriangleMesh.class::isInstance)
+                .map(TriangleMesh.class::cast).toArray(TriangleMesh[]::new);
+        Parallel.forEach(all.length, threads, BvhBuilder.BUILD_THREADS, m -> ClosedParts.of(all[m]));
+        List<Blocker> found = new ArrayList<>();
+        for (TriangleMesh mesh : all)
+            for (ClosedParts.Part part : ClosedParts.of(mesh))
+                found.add(new Blocker(mesh, part));
+        found.sort(Comparator.comparingDouble((Blocker blocker) -> blocker.part.ball().radius).reversed());
+        int count = Math.min(found.size(), MAX_BLOCKERS);
+        this.meshes = new TriangleMesh[count];
+        this.balls = new InnerBall[count];
+        this.boxes = new double[6 * count];
+        for (int s = 0; s < count; ++s) {
+            meshes[s] = found.get(s).mesh;
+            balls[s] = found.get(s).part.ball();
+            System.arraycopy(found.get(s).part.box(), 0, boxes, 6 * s, 6);
         }
     }
 
-    /**
-     * The closed meshes among the bodies of the tree that have an inner ball, at most
-     * {@value #MAX_BLOCKERS} of them: those of the largest balls, in that order. The meshes look for
-     * their balls (once each, see {@link TriangleMesh#innerBall}) on the build's threads.
-     */
-    private static TriangleMesh[] closedMeshesOf(Geometry[] owners, int threads) {
-        TriangleMesh[] closed = Arrays.stream(owners).filter(TriangleMesh.class::isInstance)
-                .map(TriangleMesh.class::cast).toArray(TriangleMesh[]::new);
-        Parallel.forEach(closed.length, threads, BvhBuilder.BUILD_THREADS, m -> closed[m].innerBall());
-        return Arrays.stream(closed).filter(mesh -> mesh.innerBall() != null)
-                .sorted(Comparator.comparingDouble((TriangleMesh mesh) -> mesh.innerBall().radius).reversed())
-                .limit(MAX_BLOCKERS).toArray(TriangleMesh[]::new);
+    /** A closed part of a mesh, while the largest are chosen. */
+    private record Blocker(TriangleMesh mesh, ClosedParts.Part part) {
     }
 
     /**

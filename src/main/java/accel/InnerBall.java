@@ -148,7 +148,7 @@ public final class InnerBall {
     }
 
     /** {@return a key's bits well mixed (SplitMix64's finaliser), so different edges rarely cancel} */
-    private static long mix(long key) {
+    static long mix(long key) {
         long z = key + 0x9E3779B97F4A7C15L;
         z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
         z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;

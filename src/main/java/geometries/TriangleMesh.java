@@ -1,7 +1,6 @@
 package geometries;
 
 import accel.ShadowFrustum;
-import accel.InnerBall;
 import accel.BoundingVolumeHierarchy;
 import accel.RayState;
 import java.util.ArrayList;
@@ -44,9 +43,6 @@ public final class TriangleMesh extends Geometry {
     /** The box around every point the renderer's test of a triangle accepts. */
     private final double[] box = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
-    /** The ball inside the mesh when it is closed, or null; looked for once, on the first {@link #innerBall}. */
-    private InnerBall innerBall;
-    private boolean innerBallSought;
 
     /**
      * A hit on a mesh: the point, the mesh and the triangle of the mesh the point lies on.
@@ -462,20 +458,6 @@ public final class TriangleMesh extends Geometry {
     public boolean bounds(double[] target, int b) {
         System.arraycopy(box, 0, target, b, 6);
         return true;
-    }
-
-    /**
-     * The ball inside the mesh, when it is closed ({@link InnerBall}): looked for on the first call,
-     * which takes a few passes over the triangles, and kept.
-     *
-     * @return the ball, or null when the mesh is open or no ball was found
-     */
-    public synchronized InnerBall innerBall() {
-        if (!innerBallSought) {
-            innerBall = InnerBall.of(this);
-            innerBallSought = true;
-        }
-        return innerBall;
     }
 
     /**

@@ -3154,7 +3154,7 @@ class BoundingVolumeHierarchyTest {
      */
     private static boolean throughBall(List<TriangleMesh> meshes, double[] ray) {
         for (TriangleMesh mesh : meshes) {
-            InnerBall ball = mesh.innerBall();
+            InnerBall ball = InnerBall.of(mesh);
             if (ball != null && mesh.getMaterial().getKt() == 0
                     && ball.crossedBy(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]))
                 return true;
@@ -3205,7 +3205,7 @@ class BoundingVolumeHierarchyTest {
         SolidCounts enclosed = new SolidCounts();
         checkSolidBundles(rnd, new SolidScene(inside.geometries(), closed, inside.open(), inside.spheres()), 120,
                 enclosed, "TC03");
-        assertNotNull(enclosing.innerBall(), "TC03: the enclosing mesh has an inner ball");
+        assertNotNull(InnerBall.of(enclosing), "TC03: the enclosing mesh has an inner ball");
         assertEquals(0, enclosed.blocked, "TC03: a mesh around the light must block no bundle");
         assertTrue(enclosed.unblocked >= 50, "TC03: too few bundles gathered something: " + enclosed.unblocked);
 

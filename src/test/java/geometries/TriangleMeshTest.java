@@ -2,7 +2,6 @@ package geometries;
 
 import testutil.TestMeshes;
 import accel.ShadowFrustum;
-import accel.InnerBall;
 import accel.BoundingVolumeHierarchy;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -385,48 +384,6 @@ class TriangleMeshTest {
         mesh.triangleData(0, data, 0);
         for (int k = 0; k < TriangleMesh.TRIANGLE_DATA; ++k)
             assertEquals(data[k], two[k], 0, "TC12: number " + k + " before the offset must be left alone");
-    }
-
-    /**
-     * Test method for {@link TriangleMesh#innerBall()}: the mesh's {@link InnerBall}, looked for once
-     * and kept, also when several threads ask at once.
-     */
-    @Test
-    void testInnerBall() throws InterruptedException {
-        // ===== Equivalence Partitions Tests =====
-        // TC01: a sphere's mesh: its ball, InnerBall.of's, the same instance on the next call
-        TriangleMesh sphere = benchmark.SphereMesh.mesh(new Point3D(1, 2, 3), 4, 8, 12);
-        InnerBall ball = sphere.innerBall();
-        InnerBall expected = InnerBall.of(sphere);
-        assertNotNull(ball, "TC01: a sphere's mesh has an inner ball");
-        assertEquals(expected.cx, ball.cx, 0, "TC01: the ball's centre (x) must be InnerBall.of's");
-        assertEquals(expected.cy, ball.cy, 0, "TC01: the ball's centre (y) must be InnerBall.of's");
-        assertEquals(expected.cz, ball.cz, 0, "TC01: the ball's centre (z) must be InnerBall.of's");
-        assertEquals(expected.radius, ball.radius, 0, "TC01: the ball's radius must be InnerBall.of's");
-        assertSame(ball, sphere.innerBall(), "TC01: the ball must be kept");
-        // TC02: an open mesh (the square): null, on every call
-        assertNull(square.innerBall(), "TC02: an open mesh has no inner ball");
-        assertNull(square.innerBall(), "TC02: an open mesh has no inner ball on the next call either");
-        // TC03: 4 threads ask a new sphere's mesh at once: they all get one and the same ball
-        TriangleMesh shared = benchmark.SphereMesh.mesh(Point3D.ZERO, 4, 16, 32);
-        InnerBall[] balls = new InnerBall[4];
-        Thread[] threads = new Thread[balls.length];
-        for (int i = 0; i < threads.length; ++i) {
-            int index = i;
-            threads[i] = new Thread(() -> balls[index] = shared.innerBall());
-            threads[i].start();
-        }
-        for (Thread thread : threads)
-            thread.join();
-        assertNotNull(balls[0], "TC03: the sphere's mesh has an inner ball");
-        for (InnerBall other : balls)
-            assertSame(balls[0], other, "TC03: every thread must get the same ball");
-
-        // ===== Boundary Values Tests =====
-        // TC11: a closed mesh with no inner ball (two unit cubes 10 apart): null, kept
-        TriangleMesh apart = TestMeshes.merge(TestMeshes.cube(0, 0, 0, 1), TestMeshes.cube(10, 0, 0, 1));
-        assertNull(apart.innerBall(), "TC11: two cubes apart have no inner ball");
-        assertNull(apart.innerBall(), "TC11: two cubes apart have no inner ball on the next call either");
     }
 
     /**

@@ -37,6 +37,7 @@ import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
 import scene.Scene;
+import testutil.TestMeshes;
 import scenefile.Picture;
 
 /**
@@ -1210,15 +1211,23 @@ class RayTracerBasicTest {
 
     private static final int SOLID_PICTURE_SIZE = 64;
 
-    /** The scene of closed meshes: the floor is its first body. */
-    private static Scene solidScene() {
+    /**
+     * The scene of closed meshes: the floor is its first body.
+     *
+     * @param oneMesh true for the three spheres' triangles as one mesh, of three closed parts
+     * @return the scene
+     */
+    private static Scene solidScene(boolean oneMesh) {
         Scene scene = new Scene("closed meshes");
         scene.geometries.add(floor(new Material().setKd(1), Color.BLACK));
         Material matte = new Material().setKd(0.5);
         Point3D[] centres = { new Point3D(-30, 20, 30), new Point3D(25, -20, 20), new Point3D(20, 25, 35) };
         double[] radii = { 7, 6, 8 };
+        TriangleMesh[] spheres = new TriangleMesh[centres.length];
         for (int m = 0; m < centres.length; ++m)
-            scene.geometries.add(benchmark.SphereMesh.mesh(centres[m], radii[m], 8, 16).setMaterial(matte));
+            spheres[m] = benchmark.SphereMesh.mesh(centres[m], radii[m], 8, 16);
+        for (TriangleMesh mesh : oneMesh ? new TriangleMesh[] { TestMeshes.merge(spheres) } : spheres)
+            scene.geometries.add(mesh.setMaterial(matte));
         scene.lights.add(new PointLight(new Color(BUNDLE_INTENSITY, BUNDLE_INTENSITY, BUNDLE_INTENSITY), BUNDLE_LIGHT)
                 .setEdgesSize(12).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
         return scene;
@@ -1227,38 +1236,42 @@ class RayTracerBasicTest {
     /**
      * Test method for {@link RayTracerBasic#calcSoftShadows} and {@link RayTracerBase#getBlockedShadowRaysCount()}:
      * bundles blocked whole by closed opaque meshes change no picture — the scene of closed meshes
-     * renders, with adaptive sampling off and on, as through a brute-force scan of every body, which
-     * blocks no bundle, while the hierarchy blocks many.
+     * renders, with adaptive sampling off and on, as three meshes and as one mesh of three closed
+     * parts, as through a brute-force scan of every body, which blocks no bundle, while the hierarchy
+     * blocks many.
      */
     @Test
     void testBlockedBundlesKeepPictures() {
         Camera camera = bundleCamera();
-        double[][] floorNl = floorNl(solidScene(), camera, SOLID_PICTURE_SIZE);
-        for (boolean adaptive : new boolean[] { false, true }) {
-            String same = adaptive ? "TC02 (adaptive sampling)" : "TC01";
-            String counted = adaptive ? "TC04 (adaptive sampling)" : "TC03";
-            String shadow = adaptive ? "TC12 (adaptive sampling)" : "TC11";
-            RayTracerBasic fastTracer = new RayTracerBasic(solidScene());
-            RayTracerBasic scanTracer = new RayTracerBasic(solidScene());
-            ImageWriter fast = renderBundleScene(fastTracer, camera, "solids", SOLID_PICTURE_SIZE, false, adaptive);
-            ImageWriter scan = renderBundleScene(scanTracer, camera, "solids", SOLID_PICTURE_SIZE, true, adaptive);
-            // ===== Equivalence Partitions Tests =====
-            // TC01: adaptive sampling off; TC02: on: at most 0.1 % of the pixels differ from the brute
-            // force, by at most 2 levels
-            assertSamePicture(fast, scan, same);
-            // TC03: adaptive sampling off; TC04: on: the hierarchy blocks bundles of at least 1000 shadow
-            // rays (not all of them), the brute force none
-            long blocked = fastTracer.getBlockedShadowRaysCount();
-            long shadowRays = fastTracer.getShadowRaysCount();
-            assertTrue(blocked >= 1000 && blocked < shadowRays, counted + ": " + blocked + " of "
-                    + shadowRays + " shadow rays in blocked bundles");
-            assertEquals(0, scanTracer.getBlockedShadowRaysCount(), counted + ": the brute force must block no bundle");
-            assertTrue(scanTracer.getShadowRaysCount() > 0, counted + ": the brute force traces shadow rays");
-            // ===== Boundary Values Tests =====
-            // TC11: adaptive sampling off; TC12: on: the floor has an umbra (share < 0.02), fully lit
-            // parts (share > 0.98) and a penumbra of at least 30 pixels strictly between them
-            assertSoftShadow(fast, floorNl, 30, shadow);
-        }
+        double[][] floorNl = floorNl(solidScene(false), camera, SOLID_PICTURE_SIZE);
+        for (boolean oneMesh : new boolean[] { false, true })
+            for (boolean adaptive : new boolean[] { false, true }) {
+                String form = (adaptive ? " (adaptive sampling" : " (") + (oneMesh ? ", one mesh)" : ")");
+                String same = (adaptive ? "TC02" : "TC01") + form;
+                String counted = (adaptive ? "TC04" : "TC03") + form;
+                String shadow = (adaptive ? "TC12" : "TC11") + form;
+                RayTracerBasic fastTracer = new RayTracerBasic(solidScene(oneMesh));
+                RayTracerBasic scanTracer = new RayTracerBasic(solidScene(oneMesh));
+                ImageWriter fast = renderBundleScene(fastTracer, camera, "solids", SOLID_PICTURE_SIZE, false, adaptive);
+                ImageWriter scan = renderBundleScene(scanTracer, camera, "solids", SOLID_PICTURE_SIZE, true, adaptive);
+                // ===== Equivalence Partitions Tests =====
+                // TC01: adaptive sampling off; TC02: on (each as three meshes and as one): at most 0.1 %
+                // of the pixels differ from the brute force, by at most 2 levels
+                assertSamePicture(fast, scan, same);
+                // TC03: adaptive sampling off; TC04: on: the hierarchy blocks bundles of at least 1000
+                // shadow rays (not all of them), the brute force none
+                long blocked = fastTracer.getBlockedShadowRaysCount();
+                long shadowRays = fastTracer.getShadowRaysCount();
+                assertTrue(blocked >= 1000 && blocked < shadowRays, counted + ": " + blocked + " of "
+                        + shadowRays + " shadow rays in blocked bundles");
+                assertEquals(0, scanTracer.getBlockedShadowRaysCount(),
+                        counted + ": the brute force must block no bundle");
+                assertTrue(scanTracer.getShadowRaysCount() > 0, counted + ": the brute force traces shadow rays");
+                // ===== Boundary Values Tests =====
+                // TC11: adaptive sampling off; TC12: on: the floor has an umbra (share < 0.02), fully lit
+                // parts (share > 0.98) and a penumbra of at least 30 pixels strictly between them
+                assertSoftShadow(fast, floorNl, 30, shadow);
+            }
     }
 
     // ---------------------------------------------------------------------------------------------

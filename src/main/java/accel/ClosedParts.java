@@ -1,0 +1,234 @@
+package accel;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.List;
+import java.util.Map;
+import java.util.WeakHashMap;
+
+import geometries.TriangleMesh;
+import primitives.Point3D;
+
+/**
+ * The closed parts of a triangle mesh, each with its inner ball: a mesh of several bodies (M's three
+ * spheres as one mesh, a scan whose seams repeat their vertices) blocks whole bundles part by part.
+ * <p>
+ * Vertices with the same coordinates, to the bit, are welded into one: the renderer's triangle test
+ * reads coordinates, not indices, so two triangles meeting at welded vertices share an edge exactly
+ * as two sharing indices do. The triangles then fall into connected parts (union–find over their
+ * welded corners); a part is closed when each of its edges is used by an even number of its
+ * triangles, and a segment from inside a closed part to outside it crosses that part's surface,
+ * whatever the mesh's other parts do. Each mesh's parts are found once and kept, weakly, for as long
+ * as the mesh lives.
+ */
+final class ClosedParts {
+    /** The fewest triangles a closed part has: a tetrahedron's. */
+    private static final int MIN_TRIANGLES = 4;
+    /** Each mesh's closed parts with an inner ball, found on the first {@link #of} (weak keys: no leak). */
+    private static final Map<TriangleMesh, List<Part>> FOUND = Collections.synchronizedMap(new WeakHashMap<>());
+
+    /**
+     * A closed part of a mesh: its ball and the box around its triangles.
+     *
+     * @param ball the part's inner ball
+     * @param box  the box around the part's triangles, as {@link TriangleMesh#bounds(double[], int)} writes it
+     */
+    record Part(InnerBall ball, double[] box) {
+    }
+
+    /** Not instantiable. */
+    private ClosedParts() {
+    }
+
+    /**
+     * The closed parts of a mesh that have an inner ball, found on the first call and kept.
+     *
+     * @param mesh the mesh
+     * @return its parts (none for a mesh without a closed part), not to be changed
+     */
+    static List<Part> of(TriangleMesh mesh) {
+        List<Part> parts = FOUND.get(mesh);
+        if (parts == null) {
+            parts = find(mesh);
+            FOUND.put(mesh, parts);
+        }
+        return parts;
+    }
+
+    /** {@return the closed parts of a mesh with an inner ball, found anew} */
+    private static List<Part> find(TriangleMesh mesh) {
+        int[] welded = weld(mesh);
+        int[] indices = mesh.indices();
+        int[] partOf = connectedParts(welded, indices);
+        List<Part> parts = new ArrayList<>();
+        for (int[] triangles : closedParts(welded, indices, partOf)) {
+            TriangleMesh part = subMesh(mesh, welded, triangles);
+            InnerBall ball = InnerBall.of(part);
+            if (ball != null) {
+                double[] box = new double[6];
+                part.bounds(box, 0);
+                parts.add(new Part(ball, box));
+            }
+        }
+        return List.copyOf(parts);
+    }
+
+    /**
+     * Welds the vertices of a mesh that have the same coordinates, to the bit: an open-addressing
+     * table of the vertices by their coordinates' bits.
+     *
+     * @param mesh the mesh
+     * @return per vertex, the first vertex with its coordinates
+     */
+    static int[] weld(TriangleMesh mesh) {
+        int count = mesh.getVerticesCount();
+        long[] bits = new long[3 * count];
+        for (int v = 0; v < count; ++v) {
+            Point3D p = mesh.getVertex(v);
+            bits[3 * v] = Double.doubleToLongBits(p.getX());
+            bits[3 * v + 1] = Double.doubleToLongBits(p.getY());
+            bits[3 * v + 2] = Double.doubleToLongBits(p.getZ());
+        }
+        int[] table = new int[Integer.highestOneBit(Math.max(2 * count, 2)) << 1];
+        Arrays.fill(table, -1);
+        int mask = table.length - 1;
+        int[] welded = new int[count];
+        for (int v = 0; v < count; ++v) {
+            int slot = (int) InnerBall.mix(bits[3 * v] ^ 31 * (bits[3 * v + 1] ^ 31 * bits[3 * v + 2])) & mask;
+            while (table[slot] >= 0 && !sameBits(bits, table[slot], v))
+                slot = slot + 1 & mask;
+            if (table[slot] < 0)
+                table[slot] = v;
+            welded[v] = table[slot];
+        }
+        return welded;
+    }
+
+    private static boolean sameBits(long[] bits, int a, int b) {
+        return bits[3 * a] == bits[3 * b] && bits[3 * a + 1] == bits[3 * b + 1] && bits[3 * a + 2] == bits[3 * b + 2];
+    }
+
+    /**
+     * Numbers the connected parts of a mesh's triangles: two triangles are in one part when a chain of
+     * triangles sharing welded vertices joins them.
+     *
+     * @param welded  per vertex, its welded vertex
+     * @param indices the triangles' vertex indices, three per triangle
+     * @return per triangle, its part: the root of its corners' set
+     */
+    private static int[] connectedParts(int[] welded, int[] indices) {
+        int[] parent = new int[welded.length];
+        for (int v = 0; v < parent.length; ++v)
+            parent[v] = v;
+        for (int i = 0; i < indices.length; i += 3) {
+            union(parent, welded[indices[i]], welded[indices[i + 1]]);
+            union(parent, welded[indices[i]], welded[indices[i + 2]]);
+        }
+        int[] partOf = new int[indices.length / 3];
+        for (int t = 0; t < partOf.length; ++t)
+            partOf[t] = root(parent, welded[indices[3 * t]]);
+        return partOf;
+    }
+
+    private static void union(int[] parent, int a, int b) {
+        int ra = root(parent, a);
+        int rb = root(parent, b);
+        if (ra != rb)
+            parent[Math.max(ra, rb)] = Math.min(ra, rb);
+    }
+
+    /** {@return the root of a vertex's set, halving the path on the way} */
+    private static int root(int[] parent, int v) {
+        while (parent[v] != v) {
+            parent[v] = parent[parent[v]];
+            v = parent[v];
+        }
+        return v;
+    }
+
+    /**
+     * The closed parts of a mesh: an exclusive or of each part's mixed edge keys sets most open parts
+     * aside in one pass; the others have their edges sorted and counted.
+     *
+     * @param welded  per vertex, its welded vertex
+     * @param indices the triangles' vertex indices
+     * @param partOf  per triangle, its part
+     * @return the triangles of each closed part of {@value #MIN_TRIANGLES} or more, in order
+     */
+    private static List<int[]> closedParts(int[] welded, int[] indices, int[] partOf) {
+        long[] mixed = new long[welded.length];
+        int[] sizes = new int[welded.length];
+        for (int t = 0; t < partOf.length; ++t) {
+            ++sizes[partOf[t]];
+            for (int k = 0; k < 3; ++k)
+                mixed[partOf[t]] ^= InnerBall.mix(edgeKey(welded, indices, 3 * t + k));
+        }
+        // the triangles grouped by part (a counting sort), only for parts that passed the exclusive or
+        int[] start = new int[welded.length + 1];
+        for (int p = 0; p < welded.length; ++p)
+            start[p + 1] = start[p] + (sizes[p] >= MIN_TRIANGLES && mixed[p] == 0 ? sizes[p] : 0);
+        int[] grouped = new int[start[welded.length]];
+        int[] next = Arrays.copyOf(start, welded.length);
+        for (int t = 0; t < partOf.length; ++t)
+            if (start[partOf[t] + 1] > start[partOf[t]])
+                grouped[next[partOf[t]]++] = t;
+        List<int[]> closed = new ArrayList<>();
+        for (int p = 0; p < welded.length; ++p)
+            if (start[p + 1] > start[p]) {
+                int[] triangles = Arrays.copyOfRange(grouped, start[p], start[p + 1]);
+                if (isClosed(welded, indices, triangles))
+                    closed.add(triangles);
+            }
+        return closed;
+    }
+
+    /** {@return whether every edge of some triangles, by welded vertex, is used an even number of times} */
+    private static boolean isClosed(int[] welded, int[] indices, int[] triangles) {
+        long[] edges = new long[3 * triangles.length];
+        for (int i = 0; i < triangles.length; ++i)
+            for (int k = 0; k < 3; ++k)
+                edges[3 * i + k] = edgeKey(welded, indices, 3 * triangles[i] + k);
+        Arrays.sort(edges);
+        for (int i = 0; i < edges.length; i += 2)
+            if (edges[i] != edges[i + 1])
+                return false;
+        return true;
+    }
+
+    /** {@return the key of the edge from corner i to the next corner of its triangle, by welded vertex, either way round} */
+    private static long edgeKey(int[] welded, int[] indices, int i) {
+        int a = welded[indices[i]];
+        int b = welded[indices[i % 3 == 2 ? i - 2 : i + 1]];
+        return (long) Math.min(a, b) << 32 | Math.max(a, b);
+    }
+
+    /**
+     * The mesh of some of a mesh's triangles over its welded vertices, each corner in its order.
+     *
+     * @param mesh      the mesh
+     * @param welded    per vertex, its welded vertex
+     * @param triangles the triangles
+     * @return the part's own mesh (its vertices the same doubles)
+     */
+    private static TriangleMesh subMesh(TriangleMesh mesh, int[] welded, int[] triangles) {
+        int[] renumbered = new int[welded.length];
+        Arrays.fill(renumbered, -1);
+        double[] vertices = new double[9 * triangles.length];
+        int[] indices = new int[3 * triangles.length];
+        int count = 0;
+        for (int i = 0; i < triangles.length; ++i)
+            for (int k = 0; k < 3; ++k) {
+                int v = welded[mesh.getVertexIndex(triangles[i], k)];
+                if (renumbered[v] < 0) {
+                    Point3D p = mesh.getVertex(v);
+                    vertices[3 * count] = p.getX();
+                    vertices[3 * count + 1] = p.getY();
+                    vertices[3 * count + 2] = p.getZ();
+                    renumbered[v] = count++;
+                }
+                indices[3 * i + k] = renumbered[v];
+            }
+        return new TriangleMesh(Arrays.copyOf(vertices, 3 * count), indices);
+    }
+}
