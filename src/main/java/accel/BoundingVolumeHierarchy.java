@@ -52,6 +52,7 @@ public final class BoundingVolumeHierarchy {
     private final long version;
     private final LeafBodies bodies;
     private final BvhNodes nodes;
+    private final ClosedMeshBlockers blockers;
     private final ClosestHitWalk closestHitWalk;
     private final TransmittanceWalk transmittanceWalk;
     private final BundleGather bundleGather;
@@ -76,7 +77,7 @@ public final class BoundingVolumeHierarchy {
         this.nodes = new BvhNodes(builder);
         this.bodies = new LeafBodies(infinite.toArray(new Geometry[0]), generic.toArray(new Intersectable[0]),
                 builder, threads);
-        ClosedMeshBlockers blockers = new ClosedMeshBlockers(tree ? owners : new Geometry[0], threads);
+        this.blockers = new ClosedMeshBlockers(tree ? owners : new Geometry[0], threads);
         this.closestHitWalk = new ClosestHitWalk(nodes, bodies);
         this.transmittanceWalk = new TransmittanceWalk(nodes, bodies);
         this.bundleGather = new BundleGather(nodes, bodies, blockers, transmittanceWalk, tree);
@@ -114,6 +115,16 @@ public final class BoundingVolumeHierarchy {
      */
     public static BoundingVolumeHierarchy scan(Intersectable geometries) {
         return new BoundingVolumeHierarchy(geometries, false, 1);
+    }
+
+    /**
+     * Reads again what the hierarchy keeps of the bodies' materials: whether the closed parts of
+     * course-style {@link geometries.Triangle}s are opaque, so that they block whole bundles. A render
+     * calls it before every frame; call it after changing such a triangle's {@code kT} between frames
+     * traced without a render.
+     */
+    public void readMaterials() {
+        blockers.readMaterials();
     }
 
     /**

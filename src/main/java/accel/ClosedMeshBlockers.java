@@ -1,6 +1,7 @@
 package accel;
 
 import geometries.Geometry;
+import geometries.Triangle;
 import geometries.TriangleMesh;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -8,6 +9,7 @@ import java.util.Comparator;
 import java.util.List;
 
 import primitives.Parallel;
+import primitives.Point3D;
 
 /**
  * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part whose inner ball
@@ -18,13 +20,21 @@ final class ClosedMeshBlockers {
     /** The most closed meshes whose inner balls the gather tries: those of the largest balls. */
     static final int MAX_BLOCKERS = 16;
 
+    /** The fewest course-style triangles looked at for closed parts: a tetrahedron's. */
+    private static final int MIN_TRIANGLES = 4;
+
     /**
-     * The closed parts of the tree's meshes that have an inner ball ({@link ClosedParts}), the largest
-     * balls first: each part's mesh (whose material says whether it is opaque), its ball and its box.
+     * The closed parts that have an inner ball, the largest balls first: of the tree's meshes
+     * ({@link ClosedParts}), and of its course-style {@link Triangle} objects taken as one mesh. Per
+     * part: its mesh (whose material says whether it is opaque), or null for triangles, then the
+     * triangles; its ball and its box.
      */
     private final TriangleMesh[] meshes;
+    private final Triangle[][] triangles;
     private final InnerBall[] balls;
     private final double[] boxes;
+    /** Per part of triangles: whether all of them were opaque when {@link #readMaterials} last looked. */
+    private final boolean[] opaque;
 
     /**
      * Finds the blockers among the tree's geometries.
@@ -39,21 +49,70 @@ final class ClosedMeshBlockers {
         List<Blocker> found = new ArrayList<>();
         for (TriangleMesh mesh : all)
             for (ClosedParts.Part part : ClosedParts.of(mesh))
-                found.add(new Blocker(mesh, part));
+                found.add(new Blocker(mesh, null, part));
+        found.addAll(triangleParts(owners));
         found.sort(Comparator.comparingDouble((Blocker blocker) -> blocker.part.ball().radius).reversed());
         int count = Math.min(found.size(), MAX_BLOCKERS);
         this.meshes = new TriangleMesh[count];
+        this.triangles = new Triangle[count][];
         this.balls = new InnerBall[count];
         this.boxes = new double[6 * count];
+        this.opaque = new boolean[count];
         for (int s = 0; s < count; ++s) {
-            meshes[s] = found.get(s).mesh;
-            balls[s] = found.get(s).part.ball();
-            System.arraycopy(found.get(s).part.box(), 0, boxes, 6 * s, 6);
+            Blocker blocker = found.get(s);
+            meshes[s] = blocker.mesh;
+            triangles[s] = blocker.triangles;
+            balls[s] = blocker.part.ball();
+            System.arraycopy(blocker.part.box(), 0, boxes, 6 * s, 6);
         }
+        readMaterials();
     }
 
-    /** A closed part of a mesh, while the largest are chosen. */
-    private record Blocker(TriangleMesh mesh, ClosedParts.Part part) {
+    /** A closed part of a mesh, or of the course-style triangles, while the largest are chosen. */
+    private record Blocker(TriangleMesh mesh, Triangle[] triangles, ClosedParts.Part part) {
+    }
+
+    /**
+     * The closed parts of the tree's course-style triangles (exactly {@link Triangle}s: a subclass may
+     * answer otherwise), found on the mesh of their vertices, in order, three per triangle: each
+     * triangle of that mesh is tested on the same numbers as its {@link Triangle}.
+     */
+    private static List<Blocker> triangleParts(Geometry[] owners) {
+        Triangle[] plain = Arrays.stream(owners).filter(owner -> owner.getClass() == Triangle.class)
+                .map(Triangle.class::cast).toArray(Triangle[]::new);
+        List<Blocker> parts = new ArrayList<>();
+        if (plain.length < MIN_TRIANGLES)
+            return parts;
+        double[] vertices = new double[9 * plain.length];
+        int[] indices = new int[3 * plain.length];
+        for (int t = 0; t < plain.length; ++t) {
+            List<Point3D> corners = plain[t].getVertices();
+            for (int k = 0; k < 3; ++k) {
+                vertices[9 * t + 3 * k] = corners.get(k).getX();
+                vertices[9 * t + 3 * k + 1] = corners.get(k).getY();
+                vertices[9 * t + 3 * k + 2] = corners.get(k).getZ();
+                indices[3 * t + k] = 3 * t + k;
+            }
+        }
+        for (ClosedParts.Part part : ClosedParts.find(new TriangleMesh(vertices, indices)))
+            parts.add(new Blocker(null, Arrays.stream(part.triangles()).mapToObj(t -> plain[t])
+                    .toArray(Triangle[]::new), part));
+        return parts;
+    }
+
+    /**
+     * Reads again whether the parts of course-style triangles are opaque: every triangle's {@code kT}
+     * 0 (a mesh's part reads its one material at every gather).
+     */
+    void readMaterials() {
+        for (int s = 0; s < opaque.length; ++s)
+            opaque[s] = triangles[s] != null
+                    && Arrays.stream(triangles[s]).allMatch(triangle -> triangle.getMaterial().getKt() == 0);
+    }
+
+    /** {@return whether part s of the blockers is opaque} */
+    private boolean isOpaque(int s) {
+        return meshes[s] != null ? meshes[s].getMaterial().getKt() == 0 : opaque[s];
     }
 
     /**
@@ -70,7 +129,7 @@ final class ClosedMeshBlockers {
         int count = 0;
         for (int s = 0; s < meshes.length; ++s) {
             InnerBall ball = balls[s];
-            if (meshes[s].getMaterial().getKt() != 0 || !frustum.meetsBox(ball.box(), 0))
+            if (!isOpaque(s) || !frustum.meetsBox(ball.box(), 0))
                 continue;
             if (frustum.crossesClosedMesh(ball, boxes, 6 * s)) {
                 query.blocked = true;

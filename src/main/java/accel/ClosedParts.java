@@ -29,12 +29,13 @@ final class ClosedParts {
     private static final Map<TriangleMesh, List<Part>> FOUND = Collections.synchronizedMap(new WeakHashMap<>());
 
     /**
-     * A closed part of a mesh: its ball and the box around its triangles.
+     * A closed part of a mesh: its triangles, its ball and the box around its triangles.
      *
-     * @param ball the part's inner ball
-     * @param box  the box around the part's triangles, as {@link TriangleMesh#bounds(double[], int)} writes it
+     * @param triangles the part's triangles in the mesh, in order
+     * @param ball      the part's inner ball
+     * @param box       the box around the part's triangles, as {@link TriangleMesh#bounds(double[], int)} writes it
      */
-    record Part(InnerBall ball, double[] box) {
+    record Part(int[] triangles, InnerBall ball, double[] box) {
     }
 
     /** Not instantiable. */
@@ -56,8 +57,8 @@ final class ClosedParts {
         return parts;
     }
 
-    /** {@return the closed parts of a mesh with an inner ball, found anew} */
-    private static List<Part> find(TriangleMesh mesh) {
+    /** {@return the closed parts of a mesh with an inner ball, found anew (not kept)} */
+    static List<Part> find(TriangleMesh mesh) {
         int[] welded = weld(mesh);
         int[] indices = mesh.indices();
         int[] partOf = connectedParts(welded, indices);
@@ -68,7 +69,7 @@ final class ClosedParts {
             if (ball != null) {
                 double[] box = new double[6];
                 part.bounds(box, 0);
-                parts.add(new Part(ball, box));
+                parts.add(new Part(triangles, ball, box));
             }
         }
         return List.copyOf(parts);

@@ -65,7 +65,8 @@ public class RayTracerBasic extends RayTracerBase {
     /**
      * Takes the bounding volume hierarchy over the scene's bodies, built on up to a number of threads
      * unless it was built over them as they are now (the scene's composite keeps it, see
-     * {@link geometries.Geometries#hierarchy}, so a new tracer over an unchanged scene builds nothing).
+     * {@link geometries.Geometries#hierarchy}, so a new tracer over an unchanged scene builds nothing),
+     * and has it read the bodies' materials again ({@link BoundingVolumeHierarchy#readMaterials}).
      */
     @Override
     protected synchronized void prepare(int threads) {
@@ -73,6 +74,7 @@ public class RayTracerBasic extends RayTracerBase {
         if (bvh == null || !bvh.isBuiltFrom(scene.geometries))
             accelerator = bruteForce ? BoundingVolumeHierarchy.scan(scene.geometries)
                     : scene.geometries.hierarchy(threads);
+        accelerator.readMaterials();
     }
 
     /**

@@ -1211,52 +1211,78 @@ class RayTracerBasicTest {
 
     private static final int SOLID_PICTURE_SIZE = 64;
 
+    /** How the closed bodies of the scene of closed meshes are made. */
+    private enum SolidForm {
+        /** Three sphere meshes. */
+        MESHES,
+        /** The three spheres' triangles as one mesh, of three closed parts. */
+        ONE_MESH,
+        /** The three spheres' triangles as course-style {@link Triangle} objects. */
+        TRIANGLES
+    }
+
     /**
      * The scene of closed meshes: the floor is its first body.
      *
-     * @param oneMesh true for the three spheres' triangles as one mesh, of three closed parts
+     * @param form how the spheres are made
+     * @param kT   the spheres' transparency
      * @return the scene
      */
-    private static Scene solidScene(boolean oneMesh) {
+    private static Scene solidScene(SolidForm form, double kT) {
         Scene scene = new Scene("closed meshes");
         scene.geometries.add(floor(new Material().setKd(1), Color.BLACK));
-        Material matte = new Material().setKd(0.5);
+        Material matte = new Material().setKd(0.5).setKt(kT);
         Point3D[] centres = { new Point3D(-30, 20, 30), new Point3D(25, -20, 20), new Point3D(20, 25, 35) };
         double[] radii = { 7, 6, 8 };
         TriangleMesh[] spheres = new TriangleMesh[centres.length];
         for (int m = 0; m < centres.length; ++m)
             spheres[m] = benchmark.SphereMesh.mesh(centres[m], radii[m], 8, 16);
-        for (TriangleMesh mesh : oneMesh ? new TriangleMesh[] { TestMeshes.merge(spheres) } : spheres)
-            scene.geometries.add(mesh.setMaterial(matte));
+        switch (form) {
+            case MESHES -> {
+                for (TriangleMesh mesh : spheres)
+                    scene.geometries.add(mesh.setMaterial(matte));
+            }
+            case ONE_MESH -> scene.geometries.add(TestMeshes.merge(spheres).setMaterial(matte));
+            case TRIANGLES -> {
+                for (TriangleMesh mesh : spheres)
+                    for (Triangle triangle : mesh.getTriangles())
+                        scene.geometries.add(triangle.setMaterial(matte));
+            }
+        }
         scene.lights.add(new PointLight(new Color(BUNDLE_INTENSITY, BUNDLE_INTENSITY, BUNDLE_INTENSITY), BUNDLE_LIGHT)
                 .setEdgesSize(12).setUV(new Vector(1, 0, 0), new Vector(0, 1, 0)));
         return scene;
     }
 
+    /** {@return the scene of closed meshes, three opaque sphere meshes} */
+    private static Scene solidScene() {
+        return solidScene(SolidForm.MESHES, 0);
+    }
+
     /**
      * Test method for {@link RayTracerBasic#calcSoftShadows} and {@link RayTracerBase#getBlockedShadowRaysCount()}:
      * bundles blocked whole by closed opaque meshes change no picture — the scene of closed meshes
-     * renders, with adaptive sampling off and on, as three meshes and as one mesh of three closed
-     * parts, as through a brute-force scan of every body, which blocks no bundle, while the hierarchy
-     * blocks many.
+     * renders, with adaptive sampling off and on, as three meshes, as one mesh of three closed parts
+     * and as course-style triangles, as through a brute-force scan of every body, which blocks no
+     * bundle, while the hierarchy blocks many.
      */
     @Test
     void testBlockedBundlesKeepPictures() {
         Camera camera = bundleCamera();
-        double[][] floorNl = floorNl(solidScene(false), camera, SOLID_PICTURE_SIZE);
-        for (boolean oneMesh : new boolean[] { false, true })
+        double[][] floorNl = floorNl(solidScene(), camera, SOLID_PICTURE_SIZE);
+        for (SolidForm form : SolidForm.values())
             for (boolean adaptive : new boolean[] { false, true }) {
-                String form = (adaptive ? " (adaptive sampling" : " (") + (oneMesh ? ", one mesh)" : ")");
-                String same = (adaptive ? "TC02" : "TC01") + form;
-                String counted = (adaptive ? "TC04" : "TC03") + form;
-                String shadow = (adaptive ? "TC12" : "TC11") + form;
-                RayTracerBasic fastTracer = new RayTracerBasic(solidScene(oneMesh));
-                RayTracerBasic scanTracer = new RayTracerBasic(solidScene(oneMesh));
+                String suffix = " (" + form + (adaptive ? ", adaptive sampling)" : ")");
+                String same = (adaptive ? "TC02" : "TC01") + suffix;
+                String counted = (adaptive ? "TC04" : "TC03") + suffix;
+                String shadow = (adaptive ? "TC12" : "TC11") + suffix;
+                RayTracerBasic fastTracer = new RayTracerBasic(solidScene(form, 0));
+                RayTracerBasic scanTracer = new RayTracerBasic(solidScene(form, 0));
                 ImageWriter fast = renderBundleScene(fastTracer, camera, "solids", SOLID_PICTURE_SIZE, false, adaptive);
                 ImageWriter scan = renderBundleScene(scanTracer, camera, "solids", SOLID_PICTURE_SIZE, true, adaptive);
                 // ===== Equivalence Partitions Tests =====
-                // TC01: adaptive sampling off; TC02: on (each as three meshes and as one): at most 0.1 %
-                // of the pixels differ from the brute force, by at most 2 levels
+                // TC01: adaptive sampling off; TC02: on (each in the three forms): at most 0.1 % of the
+                // pixels differ from the brute force, by at most 2 levels
                 assertSamePicture(fast, scan, same);
                 // TC03: adaptive sampling off; TC04: on: the hierarchy blocks bundles of at least 1000
                 // shadow rays (not all of them), the brute force none
@@ -1272,6 +1298,37 @@ class RayTracerBasicTest {
                 // parts (share > 0.98) and a penumbra of at least 30 pixels strictly between them
                 assertSoftShadow(fast, floorNl, 30, shadow);
             }
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#prepare(int)}: course-style triangles made transparent
+     * after the hierarchy was built block no bundle in the next render, whose picture is the brute
+     * force's.
+     */
+    @Test
+    void testBlockedBundlesReadMaterials() {
+        Camera camera = bundleCamera();
+        Scene scene = solidScene(SolidForm.TRIANGLES, 0);
+        RayTracerBasic tracer = new RayTracerBasic(scene);
+        renderBundleScene(tracer, camera, "solids-opaque", SOLID_PICTURE_SIZE, false, false);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: opaque: bundles blocked (at least 1000 shadow rays)
+        assertTrue(tracer.getBlockedShadowRaysCount() >= 1000, "TC01: the opaque triangles block bundles");
+        // TC02: the same triangles' material made transparent (kT 0.5) and rendered again: no bundle
+        // blocked, the picture the brute force's over transparent spheres
+        ((Triangle) scene.geometries.getGeometries().get(1)).getMaterial().setKt(0.5);
+        RayTracerBasic again = new RayTracerBasic(scene);
+        ImageWriter fast = renderBundleScene(again, camera, "solids-clear", SOLID_PICTURE_SIZE, false, false);
+        ImageWriter scan = renderBundleScene(new RayTracerBasic(solidScene(SolidForm.TRIANGLES, 0.5)), camera,
+                "solids-clear-scan", SOLID_PICTURE_SIZE, true, false);
+        assertEquals(0, again.getBlockedShadowRaysCount(), "TC02: transparent triangles block no bundle");
+        assertSamePicture(fast, scan, "TC02");
+        // ===== Boundary Values Tests =====
+        // TC11: the triangles' material made opaque again (kT 0): bundles blocked again in the next render
+        ((Triangle) scene.geometries.getGeometries().get(1)).getMaterial().setKt(0);
+        RayTracerBasic third = new RayTracerBasic(scene);
+        renderBundleScene(third, camera, "solids-opaque-again", SOLID_PICTURE_SIZE, false, false);
+        assertTrue(third.getBlockedShadowRaysCount() >= 1000, "TC11: opaque again, the triangles block bundles");
     }
 
     // ---------------------------------------------------------------------------------------------
