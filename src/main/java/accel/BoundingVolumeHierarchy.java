@@ -71,13 +71,14 @@ public final class BoundingVolumeHierarchy {
             infinite.addAll(bounded);
             bounded.clear();
         }
+        PackedTriangles packed = PackedTriangles.take(bounded);
         Geometry[] owners = bounded.toArray(new Geometry[0]);
         BvhBuilder builder = new BvhBuilder(owners, threads);
         builder.build();
         this.nodes = new BvhNodes(builder);
         this.bodies = new LeafBodies(infinite.toArray(new Geometry[0]), generic.toArray(new Intersectable[0]),
-                builder, threads);
-        this.blockers = new ClosedMeshBlockers(tree ? owners : new Geometry[0], threads);
+                packed, builder, threads);
+        this.blockers = new ClosedMeshBlockers(owners, packed, threads);
         this.closestHitWalk = new ClosestHitWalk(nodes, bodies);
         this.transmittanceWalk = new TransmittanceWalk(nodes, bodies);
         this.bundleGather = new BundleGather(nodes, bodies, blockers, transmittanceWalk, tree);
@@ -176,7 +177,7 @@ public final class BoundingVolumeHierarchy {
         RayState state = query.ray.set(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(),
                 Geometry.NO_HIT);
         closestHitWalk.closestHit(query, state);
-        GeoPoint nearest = state.geometry == null ? null : state.geometry.hitPoint(ray, state.maxT, state.part);
+        GeoPoint nearest = state.geometry == null ? null : bodies.hitPoint(ray, state);
         return bodies.nearestOfOthers(ray, nearest);
     }
 

@@ -116,7 +116,7 @@ final class BundleGather {
                 if (part >= 0) {
                     TriangleMesh mesh = (TriangleMesh) bodies.owner(b);
                     mesh.triangleData(part, query.gatheredTriangles, d);
-                    query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA] = mesh.getMaterial().getKt();
+                    query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA] = bodies.kT(mesh, part);
                 }
                 query.gathered[slot] = part >= 0 ? -1 : b;
                 query.gatheredCount = slot + 1;

@@ -9,7 +9,6 @@ import java.util.Comparator;
 import java.util.List;
 
 import primitives.Parallel;
-import primitives.Point3D;
 
 /**
  * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part whose inner ball
@@ -20,12 +19,9 @@ final class ClosedMeshBlockers {
     /** The most closed meshes whose inner balls the gather tries: those of the largest balls. */
     static final int MAX_BLOCKERS = 16;
 
-    /** The fewest course-style triangles looked at for closed parts: a tetrahedron's. */
-    private static final int MIN_TRIANGLES = 4;
-
     /**
      * The closed parts that have an inner ball, the largest balls first: of the tree's meshes
-     * ({@link ClosedParts}), and of its course-style {@link Triangle} objects taken as one mesh. Per
+     * ({@link ClosedParts}), its course-style {@link Triangle} objects among them ({@link PackedTriangles}). Per
      * part: its mesh (whose material says whether it is opaque), or null for triangles, then the
      * triangles; its ball and its box.
      */
@@ -40,17 +36,20 @@ final class ClosedMeshBlockers {
      * Finds the blockers among the tree's geometries.
      *
      * @param owners  the tree's geometries (none for a brute-force scan)
+     * @param packed  the tree's course-style triangles packed into one of its meshes, or null
      * @param threads the number of threads the meshes look for their closed parts on
      */
-    ClosedMeshBlockers(Geometry[] owners, int threads) {
+    ClosedMeshBlockers(Geometry[] owners, PackedTriangles packed, int threads) {
         TriangleMesh[] all = Arrays.stream(owners).filter(TriangleMesh.class::isInstance)
                 .map(TriangleMesh.class::cast).toArray(TriangleMesh[]::new);
         Parallel.forEach(all.length, threads, BvhBuilder.BUILD_THREADS, m -> ClosedParts.of(all[m]));
         List<Blocker> found = new ArrayList<>();
         for (TriangleMesh mesh : all)
             for (ClosedParts.Part part : ClosedParts.of(mesh))
-                found.add(new Blocker(mesh, null, part));
-        found.addAll(triangleParts(owners));
+                found.add(packed != null && packed.isMesh(mesh)
+                        ? new Blocker(null, Arrays.stream(part.triangles()).mapToObj(t -> packed.triangles[t])
+                                .toArray(Triangle[]::new), part)
+                        : new Blocker(mesh, null, part));
         found.sort(Comparator.comparingDouble((Blocker blocker) -> blocker.part.ball().radius).reversed());
         int count = Math.min(found.size(), MAX_BLOCKERS);
         this.meshes = new TriangleMesh[count];
@@ -68,36 +67,8 @@ final class ClosedMeshBlockers {
         readMaterials();
     }
 
-    /** A closed part of a mesh, or of the course-style triangles, while the largest are chosen. */
+    /** A closed part of a mesh, or of the packed course-style triangles, while the largest are chosen. */
     private record Blocker(TriangleMesh mesh, Triangle[] triangles, ClosedParts.Part part) {
-    }
-
-    /**
-     * The closed parts of the tree's course-style triangles (exactly {@link Triangle}s: a subclass may
-     * answer otherwise), found on the mesh of their vertices, in order, three per triangle: each
-     * triangle of that mesh is tested on the same numbers as its {@link Triangle}.
-     */
-    private static List<Blocker> triangleParts(Geometry[] owners) {
-        Triangle[] plain = Arrays.stream(owners).filter(owner -> owner.getClass() == Triangle.class)
-                .map(Triangle.class::cast).toArray(Triangle[]::new);
-        List<Blocker> parts = new ArrayList<>();
-        if (plain.length < MIN_TRIANGLES)
-            return parts;
-        double[] vertices = new double[9 * plain.length];
-        int[] indices = new int[3 * plain.length];
-        for (int t = 0; t < plain.length; ++t) {
-            List<Point3D> corners = plain[t].getVertices();
-            for (int k = 0; k < 3; ++k) {
-                vertices[9 * t + 3 * k] = corners.get(k).getX();
-                vertices[9 * t + 3 * k + 1] = corners.get(k).getY();
-                vertices[9 * t + 3 * k + 2] = corners.get(k).getZ();
-                indices[3 * t + k] = 3 * t + k;
-            }
-        }
-        for (ClosedParts.Part part : ClosedParts.find(new TriangleMesh(vertices, indices)))
-            parts.add(new Blocker(null, Arrays.stream(part.triangles()).mapToObj(t -> plain[t])
-                    .toArray(Triangle[]::new), part));
-        return parts;
     }
 
     /**

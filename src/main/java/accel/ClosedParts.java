@@ -57,8 +57,8 @@ final class ClosedParts {
         return parts;
     }
 
-    /** {@return the closed parts of a mesh with an inner ball, found anew (not kept)} */
-    static List<Part> find(TriangleMesh mesh) {
+    /** {@return the closed parts of a mesh with an inner ball, found anew} */
+    private static List<Part> find(TriangleMesh mesh) {
         int[] welded = weld(mesh);
         int[] indices = mesh.indices();
         int[] partOf = connectedParts(welded, indices);

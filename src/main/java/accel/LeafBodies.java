@@ -41,17 +41,22 @@ final class LeafBodies {
     final float[] triangleBounds;
     final Geometry[] unbounded;
     final Intersectable[] others;
+    /** The course-style triangles packed into a mesh of the tree, or null. */
+    private final PackedTriangles packed;
 
     /**
      * Keeps the bodies in the leaf order of a build.
      *
      * @param unbounded the bodies outside the tree
      * @param others    the intersectables that are not geometries
+     * @param packed    the course-style triangles packed into a mesh of the tree, or null
      * @param builder   the build over the tree's geometries, done
      * @param threads   the number of threads that share the work
      */
-    LeafBodies(Geometry[] unbounded, Intersectable[] others, BvhBuilder builder, int threads) {
+    LeafBodies(Geometry[] unbounded, Intersectable[] others, PackedTriangles packed, BvhBuilder builder,
+               int threads) {
         this.owners = builder.owners;
+        this.packed = packed;
         this.unbounded = unbounded;
         this.others = others;
         this.bodyOwner = builder.order;
@@ -120,6 +125,33 @@ final class LeafBodies {
     /** {@return the geometry of body b of the tree} */
     Geometry owner(int b) {
         return owners[bodyOwner[b]];
+    }
+
+    /**
+     * The {@code kT} of a mesh's triangle: the mesh's, or for the packed course-style triangles, the
+     * triangle's own.
+     *
+     * @param mesh the mesh
+     * @param part the triangle
+     * @return its transparency
+     */
+    double kT(TriangleMesh mesh, int part) {
+        return packed != null && packed.isMesh(mesh) ? packed.triangles[part].getMaterial().getKt()
+                : mesh.getMaterial().getKt();
+    }
+
+    /**
+     * The closest hit a walk found, as its body reports it: a packed triangle's is its {@link
+     * geometries.Triangle}'s.
+     *
+     * @param ray   the ray
+     * @param state the walk's ray, its closest hit found
+     * @return the hit
+     */
+    GeoPoint hitPoint(Ray ray, RayState state) {
+        if (packed != null && packed.isMesh(state.geometry))
+            return packed.triangles[state.part].hitPoint(ray, state.maxT, -1);
+        return state.geometry.hitPoint(ray, state.maxT, state.part);
     }
 
     /**

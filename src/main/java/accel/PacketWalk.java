@@ -183,8 +183,12 @@ final class PacketWalk {
         for (int b = firstBody; b < firstBody + bodyCount && left > 0; ++b) {
             int part = bodies.bodyPart[b];
             Geometry owner = bodies.owner(b);
-            left = part < 0 ? bodyOnPacket(packet, owner, left)
-                    : triangleOnPacket(packet, (TriangleMesh) owner, part, left);
+            if (part < 0)
+                left = bodyOnPacket(packet, owner, left);
+            else {
+                TriangleMesh mesh = (TriangleMesh) owner;
+                left = triangleOnPacket(packet, mesh, part, bodies.kT(mesh, part), left);
+            }
         }
         return count - left;
     }
@@ -213,10 +217,11 @@ final class PacketWalk {
      * {@code kT}.
      *
      * @param part  the triangle in its mesh
+     * @param kT    the triangle's transparency
      * @param count the list's length
      * @return the number of rays kept
      */
-    private static int triangleOnPacket(Packet packet, TriangleMesh mesh, int part, int count) {
+    private static int triangleOnPacket(Packet packet, TriangleMesh mesh, int part, double kT, int count) {
         double[] data = packet.triangle;
         mesh.triangleData(part, data, 0);
         // in locals, read once per leaf, not from the array for each ray
@@ -230,7 +235,6 @@ final class PacketWalk {
         double e2y = data[7];
         double e2z = data[8];
         double limit = data[9];
-        double kT = mesh.getMaterial().getKt();
         int[] list = packet.leafRays;
         RayState[] rays = packet.rays;
         int kept = 0;

@@ -99,6 +99,6 @@ final class TransmittanceWalk {
             return ray.attenuateBy(bodies.owner(b));
         TriangleMesh mesh = (TriangleMesh) bodies.owner(b);
         double t = mesh.triangleHit(part, ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT);
-        return t == Geometry.NO_HIT || ray.attenuate(mesh.getMaterial().getKt());
+        return t == Geometry.NO_HIT || ray.attenuate(bodies.kT(mesh, part));
     }
 }
