@@ -38,9 +38,11 @@ public final class InnerBall {
     /** What a parity count answers when a ray is unsure. */
     private static final int UNSURE = -1;
 
-    /** The centre. */
+    /** The centre, x. */
     public final double cx;
+    /** The centre, y. */
     public final double cy;
+    /** The centre, z. */
     public final double cz;
     /** The radius, positive. */
     public final double radius;

@@ -72,6 +72,12 @@ public abstract class Geometry extends Intersectable {
     /**
      * The distance to the nearest intersection ahead of a ray, within a limit.
      *
+     * @param ox   the ray's origin, x
+     * @param oy   the ray's origin, y
+     * @param oz   the ray's origin, z
+     * @param dx   the ray's unit direction, x
+     * @param dy   the ray's unit direction, y
+     * @param dz   the ray's unit direction, z
      * @param maxT the largest distance that counts
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when there is none
      */
@@ -158,6 +164,12 @@ public abstract class Geometry extends Intersectable {
     /**
      * The number of intersections ahead of a ray, within a limit.
      *
+     * @param ox   the ray's origin, x
+     * @param oy   the ray's origin, y
+     * @param oz   the ray's origin, z
+     * @param dx   the ray's unit direction, x
+     * @param dy   the ray's unit direction, y
+     * @param dz   the ray's unit direction, z
      * @param maxT the largest distance that counts
      * @return the number of intersections at distances in (0, maxT]
      */
@@ -170,6 +182,12 @@ public abstract class Geometry extends Intersectable {
      * The share of light that passes this body along a ray, within a limit: {@code kT} to the power
      * of the number of intersections.
      *
+     * @param ox   the ray's origin, x
+     * @param oy   the ray's origin, y
+     * @param oz   the ray's origin, z
+     * @param dx   the ray's unit direction, x
+     * @param dy   the ray's unit direction, y
+     * @param dz   the ray's unit direction, z
      * @param maxT the largest distance that counts
      * @return the transparency factor in [0, 1]
      */

@@ -111,6 +111,12 @@ public class Triangle extends Polygon {
      * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle whose data
      * (p1, e1, e2 and the parallel limit, see the constructor) lie in an array.
      *
+     * @param ox   the ray's origin, x
+     * @param oy   the ray's origin, y
+     * @param oz   the ray's origin, z
+     * @param dx   the ray's unit direction, x
+     * @param dy   the ray's unit direction, y
+     * @param dz   the ray's unit direction, z
      * @param data   the array
      * @param offset where the triangle's data start
      * @param maxT   the largest distance that counts
@@ -131,8 +137,23 @@ public class Triangle extends Polygon {
      * inlining hot methods (325 bytes of bytecode), or every triangle test of the hierarchy becomes a
      * call.
      *
+     * @param p1x           the first vertex p1, x
+     * @param p1y           the first vertex, y
+     * @param p1z           the first vertex, z
+     * @param e1x           the first edge p2 − p1, x
+     * @param e1y           the first edge, y
+     * @param e1z           the first edge, z
+     * @param e2x           the second edge p3 − p1, x
+     * @param e2y           the second edge, y
+     * @param e2z           the second edge, z
      * @param parallelLimit the |determinant| below which the ray is taken as parallel, see
      *                      {@link #parallelLimit}
+     * @param ox            the ray's origin, x
+     * @param oy            the ray's origin, y
+     * @param oz            the ray's origin, z
+     * @param dx            the ray's unit direction, x
+     * @param dy            the ray's unit direction, y
+     * @param dz            the ray's unit direction, z
      * @param maxT          the largest distance that counts
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when the ray misses
      */

@@ -366,6 +366,12 @@ public final class TriangleMesh extends Geometry {
      * ({@link Triangle#intersect}) on the same numbers.
      *
      * @param t    the triangle's index
+     * @param ox   the ray's origin, x
+     * @param oy   the ray's origin, y
+     * @param oz   the ray's origin, z
+     * @param dx   the ray's unit direction, x
+     * @param dy   the ray's unit direction, y
+     * @param dz   the ray's unit direction, z
      * @param maxT the largest distance that counts
      * @return the distance in (0, maxT], or {@link #NO_HIT}
      */
