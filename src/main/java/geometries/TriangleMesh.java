@@ -450,9 +450,9 @@ public final class TriangleMesh extends Geometry {
         target[offset + 9] = parallelLimits[t];
     }
 
-    /** {@return the triangles' vertex indices, three per triangle: the mesh's own array, not to be changed} */
+    /** {@return the triangles' vertex indices, three per triangle: a copy, so the mesh cannot change under its user} */
     public int[] indices() {
-        return indices;
+        return indices.clone();
     }
 
     /** {@return where vertex k (0, 1 or 2) of triangle t lies in the vertices' array: the place of its x} */

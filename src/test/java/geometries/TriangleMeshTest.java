@@ -506,4 +506,23 @@ class TriangleMeshTest {
         render.writeToImage();
         return image;
     }
+
+    /** Test method for {@link TriangleMesh#indices()}: the triangles' vertex indices, as a copy. */
+    @Test
+    void testIndices() {
+        TriangleMesh mesh = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 },
+                new int[] { 0, 1, 2, 0, 2, 3 });
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a square of two triangles: 0 1 2, 0 2 3
+        int[] indices = mesh.indices();
+        assertEquals(6, indices.length, "TC01: three indices per triangle");
+        for (int i = 0; i < indices.length; ++i)
+            assertEquals(mesh.getVertexIndex(i / 3, i % 3), indices[i], "TC01: index " + i);
+
+        // ===== Boundary Values Tests =====
+        // TC11: the returned array changed: the mesh keeps its triangles (vertex 3 of triangle 1 still 3)
+        indices[5] = 1;
+        assertEquals(3, mesh.getVertexIndex(1, 2), "TC11: the mesh must not change with the copy");
+        assertEquals(3, mesh.indices()[5], "TC11: a new call gives the mesh's own indices again");
+    }
 }
