@@ -1,13 +1,13 @@
 package accel;
 
-import geometries.TriangleMesh;
-import geometries.Triangle;
-import geometries.Geometry;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestMeshes.cube;
+import static testutil.TestMeshes.cubeFaces;
+import static testutil.TestMeshes.merge;
 import static testutil.TestRandom.randomPoint;
 import static testutil.TestRandom.randomUnit;
 
@@ -15,10 +15,11 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
+import benchmark.SphereMesh;
+import geometries.Geometry;
+import geometries.Triangle;
+import geometries.TriangleMesh;
 import primitives.Point3D;
-import static testutil.TestMeshes.cube;
-import static testutil.TestMeshes.cubeFaces;
-import static testutil.TestMeshes.merge;
 import primitives.Vector;
 
 /**

@@ -5,6 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.BruteForce.MIN_K;
+import static testutil.BruteForce.assertPoint;
+import static testutil.BruteForce.transmittance;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -113,5 +116,56 @@ class PackedTrianglesTest {
                 "TC12: a ray beside the triangles hits nothing");
         assertEquals(1, bvh.transmittance(query.setRay(5, 0, 0, 0, 0, 1, 10), 0.001), DELTA,
                 "TC12: a shadow ray beside the triangles lets all through");
+    }
+
+    /** A triangle with its own intersection test: it is never hit. */
+    private static final class HiddenTriangle extends Triangle {
+        /**
+         * Creates the triangle.
+         *
+         * @param p1 first vertex
+         * @param p2 second vertex
+         * @param p3 third vertex
+         */
+        HiddenTriangle(Point3D p1, Point3D p2, Point3D p3) {
+            super(p1, p2, p3);
+        }
+
+        @Override
+        public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+            return NO_HIT;
+        }
+    }
+
+    /**
+     * Test method for the triangles the tree tests from its own copy of their data: only plain
+     * {@link Triangle}s are copied, a subclass keeps its own intersection test.
+     */
+    @Test
+    void testTakeKeepsSubclasses() {
+        Material opaque = new Material();
+        Triangle plain = new Triangle(new Point3D(-1, -1, -5), new Point3D(1, -1, -5), new Point3D(0, 1, -5));
+        plain.setMaterial(opaque);
+        Triangle hidden = new HiddenTriangle(new Point3D(-1, -1, -3), new Point3D(1, -1, -3), new Point3D(0, 1, -3));
+        hidden.setMaterial(opaque);
+        Ray down = new Ray(new Point3D(0, 0, 0), new Vector(0, 0, -1));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the hidden triangle in front of a plain one: the closest hit is the plain one at (0, 0, −5)
+        BoundingVolumeHierarchy both = BoundingVolumeHierarchy.build(new Geometries(hidden, plain));
+        GeoPoint hit = both.closestHit(down, both.newQuery());
+        assertNotNull(hit, "TC01: the plain triangle must be hit");
+        assertSame(plain, hit.geometry, "TC01: wrong body hit");
+        assertPoint(new Point3D(0, 0, -5), hit.point, "TC01: wrong hit point");
+        // TC02: the opaque plain triangle blocks the light past it (transmittance 0), not before it (1)
+        assertEquals(0, transmittance(both, down, 10, MIN_K, both.newQuery()), 0, "TC02: blocked past the triangle");
+        assertEquals(1, transmittance(both, down, 4, MIN_K, both.newQuery()), 0,
+                "TC02: the hidden triangle must not block");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the hidden triangle alone: no hit, transmittance 1
+        BoundingVolumeHierarchy alone = BoundingVolumeHierarchy.build(new Geometries(hidden));
+        assertNull(alone.closestHit(down, alone.newQuery()), "TC11: the hidden triangle must not be hit");
+        assertEquals(1, transmittance(alone, down, 10, MIN_K, alone.newQuery()), 0, "TC11: nothing blocks");
     }
 }

@@ -1,14 +1,15 @@
 package accel;
 
-import geometries.Triangle;
-import geometries.Geometry;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 import static testutil.TestAssertions.assertMessage;
-import static testutil.TestRandom.edgeOrInner;
+import static testutil.TestBundles.randomPyramid;
+import static testutil.TestBundles.raySegment;
+import static testutil.TestBundles.segmentPoint;
+import static testutil.TestBundles.strayVector;
 
 import java.util.Arrays;
 import java.util.Random;
@@ -16,7 +17,10 @@ import java.util.function.Supplier;
 
 import org.junit.jupiter.api.Test;
 
+import geometries.Geometry;
+import geometries.Triangle;
 import primitives.Point3D;
+import testutil.TestBundles.RandomBundle;
 
 /**
  * Unit tests for {@link geometries.ShadowFrustum}: the pyramid from a lit point to a light's square,
@@ -866,123 +870,6 @@ class ShadowFrustumTest {
         assertFalse(meets(frustum, far), "TC13: the proper pyramid must reject the far box again");
         assertFalse(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC13: the proper pyramid must reject the plane again");
         assertTrue(meets(frustum, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC13: the proper pyramid must meet a box inside it");
-    }
-
-    /**
-     * A random base point of a pyramid: c + s·a + r·b, some of them on the base's edges and corners.
-     *
-     * @param rnd the generator
-     * @param p   the pyramid {apex, c, a, b}, 12 doubles
-     * @return the point
-     */
-    private static double[] basePoint(Random rnd, double[] p) {
-        double s = edgeOrInner(rnd);
-        double r = edgeOrInner(rnd);
-        double[] point = new double[3];
-        for (int k = 0; k < 3; ++k)
-            point[k] = p[3 + k] + s * p[6 + k] + r * p[9 + k];
-        return point;
-    }
-
-    /**
-     * A random vector no longer than a length, a third of them exactly that long.
-     *
-     * @param rnd    the generator
-     * @param length the largest length (0 gives the zero vector)
-     * @return the three coordinates
-     */
-    private static double[] strayVector(Random rnd, double length) {
-        double x = rnd.nextGaussian();
-        double y = rnd.nextGaussian();
-        double z = rnd.nextGaussian();
-        double scale = (rnd.nextInt(3) == 0 ? length : length * rnd.nextDouble()) / Math.sqrt(x * x + y * y + z * z);
-        return new double[] { x * scale, y * scale, z * scale };
-    }
-
-    /**
-     * A random segment a ray of a thick bundle may cover: from the apex to a base point, both ends moved
-     * by random vectors no longer than the thickness (a third of the time by one and the same vector, as
-     * the renderer moves a shadow ray off the surface).
-     *
-     * @param rnd       the generator
-     * @param p         the pyramid {apex, c, a, b}
-     * @param thickness the pyramid's thickness
-     * @return {start, end}, 6 doubles
-     */
-    private static double[] raySegment(Random rnd, double[] p, double thickness) {
-        double[] base = basePoint(rnd, p);
-        double[] start = strayVector(rnd, thickness);
-        double[] end = rnd.nextInt(3) == 0 ? start : strayVector(rnd, thickness);
-        return new double[] { p[0] + start[0], p[1] + start[1], p[2] + start[2], base[0] + end[0], base[1] + end[1],
-                base[2] + end[2] };
-    }
-
-    /**
-     * A random point of a segment, a fifth of them at its end and a tenth at its start.
-     *
-     * @param rnd     the generator
-     * @param segment {start, end}
-     * @return the point
-     */
-    private static double[] segmentPoint(Random rnd, double[] segment) {
-        int choice = rnd.nextInt(10);
-        double t = choice < 2 ? 1 : choice == 2 ? 0 : rnd.nextDouble();
-        return new double[] { segment[0] + t * (segment[3] - segment[0]), segment[1] + t * (segment[4] - segment[1]),
-                segment[2] + t * (segment[5] - segment[2]) };
-    }
-
-    /**
-     * A random pyramid: apex and base centre in [−20, 20]³, half-sides a and b of random directions
-     * and lengths 0.01..5.
-     *
-     * @param rnd the generator
-     * @return {apex, c, a, b}
-     */
-    private static double[] randomPyramid(Random rnd) {
-        double[] p = new double[12];
-        for (int k = 0; k < 6; ++k)
-            p[k] = 40 * rnd.nextDouble() - 20;
-        for (int v = 0; v < 2; ++v) {
-            double length = 0.01 + 5 * rnd.nextDouble();
-            double x = rnd.nextGaussian();
-            double y = rnd.nextGaussian();
-            double z = rnd.nextGaussian();
-            double norm = Math.sqrt(x * x + y * y + z * z);
-            p[6 + 3 * v] = x / norm * length;
-            p[7 + 3 * v] = y / norm * length;
-            p[8 + 3 * v] = z / norm * length;
-        }
-        return p;
-    }
-
-    /**
-     * A random bundle: a random pyramid ({@link #randomPyramid}), thin or thick, set in a frustum, and
-     * segments its rays may cover ({@link #raySegment}).
-     *
-     * @param pyramid   the pyramid {apex, c, a, b}
-     * @param thickness its thickness
-     * @param segments  200 segments, {start, end} each
-     */
-    private record RandomBundle(double[] pyramid, double thickness, double[][] segments) {
-        /**
-         * Draws a bundle, a quarter of them (every fourth) thin, the others 1e-4 to 1 thick
-         * (log-uniform), and sets its pyramid in a frustum.
-         *
-         * @param rnd     the generator
-         * @param frustum the frustum to set
-         * @param f       the bundle's number
-         * @return the bundle, or null when the pyramid is flat (refused, no segment drawn)
-         */
-        static RandomBundle set(Random rnd, ShadowFrustum frustum, int f) {
-            double[] p = randomPyramid(rnd);
-            double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
-            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], thickness))
-                return null;
-            double[][] segments = new double[200][];
-            for (int i = 0; i < segments.length; ++i)
-                segments[i] = raySegment(rnd, p, thickness);
-            return new RandomBundle(p, thickness, segments);
-        }
     }
 
     /**
