@@ -59,7 +59,8 @@ class BoundingVolumeHierarchyTest {
         assertTrue(big.getNodesCount() > 1 && big.getNodesCount() <= 2 * 1000 - 1,
                 "TC01: wrong nodes count " + big.getNodesCount());
         assertEquals(1, big.getNodesCount() % 2, "TC01: a full binary tree has an odd nodes count");
-        assertTrue(big.getDepth() >= 2 && big.getDepth() <= 32, "TC01: depth " + big.getDepth() + " is not well below 64");
+        assertTrue(big.getDepth() >= 2 && big.getDepth() <= 32, "TC01: depth " + big.getDepth()
+                + " is not well below 64");
 
         // TC02: planes and tubes stay outside the tree and are not counted; a cylinder is bounded
         Geometries mixed = new Geometries(new Sphere(new Point3D(0, 0, 0), 1),
@@ -94,7 +95,8 @@ class BoundingVolumeHierarchyTest {
             assertEquals(0, bvh.getDepth(), "TC11: an empty composite has depth 0");
             assertEquals(0, bvh.getBoundedCount(), "TC11: an empty composite has no bodies");
             assertNull(bvh.closestHit(anyRay, bvh.newQuery()), "TC11: an empty composite is never hit");
-            assertEquals(1, transmittance(bvh, anyRay, 1000, MIN_K, bvh.newQuery()), 0, "TC11: nothing blocks the light");
+            assertEquals(1, transmittance(bvh, anyRay, 1000, MIN_K, bvh.newQuery()), 0,
+                    "TC11: nothing blocks the light");
         }
 
         // TC12: one body (also given bare, not in a composite): 1 node, depth 1, found
@@ -124,7 +126,8 @@ class BoundingVolumeHierarchyTest {
                 new Geometries(new Plane(new Point3D(0, 0, -1), new Vector(0, 0, 1))));
         assertEquals(0, planes.getNodesCount(), "TC14: a plane makes no node");
         assertEquals(0, planes.getBoundedCount(), "TC14: a plane is not bounded");
-        assertPoint(new Point3D(0, 0, -1), planes.closestHit(anyRay, planes.newQuery()).point, "TC14: the plane must be hit");
+        assertPoint(new Point3D(0, 0, -1), planes.closestHit(anyRay, planes.newQuery()).point,
+                "TC14: the plane must be hit");
 
         // TC15: 2000 bodies whose boxes share one centre cannot be split apart usefully: the tree
         // stays within the limits and every body is kept
@@ -140,7 +143,8 @@ class BoundingVolumeHierarchyTest {
         BoundingVolumeHierarchy before = BoundingVolumeHierarchy.build(growing);
         growing.add(new Sphere(new Point3D(0, 0, 0), 1));
         assertNotNull(growing.findGeoIntersections(anyRay), "TC16: the composite itself sees the new body");
-        assertNull(before.closestHit(anyRay, before.newQuery()), "TC16: the hierarchy must not see a body added after it");
+        assertNull(before.closestHit(anyRay, before.newQuery()),
+                "TC16: the hierarchy must not see a body added after it");
         assertEquals(1, transmittance(before, anyRay, 1000, MIN_K, before.newQuery()), 0,
                 "TC16: the new body must not block the old hierarchy's light");
         assertEquals(1, before.getBoundedCount(), "TC16: the count must stay as built");

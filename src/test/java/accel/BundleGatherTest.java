@@ -20,8 +20,10 @@ import static testutil.TestBundles.boxesMeeting;
 import static testutil.TestBundles.gather;
 import static testutil.TestBundles.gatherLeaving;
 import static testutil.TestBundles.gathered;
+import static testutil.TestBundles.gatheredRay;
 import static testutil.TestBundles.pointOnTriangle;
 import static testutil.TestBundles.rayFromTo;
+import static testutil.TestBundles.rayTransmittance;
 import static testutil.TestBundles.shadowRays;
 import static testutil.TestBundles.squarePoint;
 import static testutil.TestBundles.stray;
@@ -201,8 +203,10 @@ class BundleGatherTest {
         Geometries aside = new Geometries(new Sphere(new Point3D(3, 0, 2), 0.5));
         BoundingVolumeHierarchy asideBvh = BoundingVolumeHierarchy.build(aside);
         Query asideQuery = asideBvh.newQuery();
-        assertFalse(gather(asideBvh, asideQuery, up, below, a, b), "TC02: a sphere beside the pyramid must not be gathered");
-        assertEquals(0, assertBundle(asideBvh, asideQuery, up, below, a, b, 0, rnd, "TC02"), "TC02: no ray may be blocked");
+        assertFalse(gather(asideBvh, asideQuery, up, below, a, b),
+                "TC02: a sphere beside the pyramid must not be gathered");
+        assertEquals(0, assertBundle(asideBvh, asideQuery, up, below, a, b, 0, rnd, "TC02"),
+                "TC02: no ray may be blocked");
         // TC03: the 40 triangles of a row under a pyramid covering all of them: true (a subtree is kept),
         // and the rays agree with the tree, through each triangle blocked, between them open
         BoundingVolumeHierarchy rowBvh = BoundingVolumeHierarchy.build(triangleRow());
@@ -210,7 +214,8 @@ class BundleGatherTest {
         Point3D apexRow = new Point3D(20, 0, 10);
         Point3D cRow = new Point3D(20, 0, -10);
         Vector aRow = new Vector(50, 0, 0);
-        assertTrue(gather(rowBvh, rowQuery, apexRow, cRow, aRow, b), "TC03: a pyramid over 40 triangles must give true");
+        assertTrue(gather(rowBvh, rowQuery, apexRow, cRow, aRow, b),
+                "TC03: a pyramid over 40 triangles must give true");
         assertBundle(rowBvh, rowQuery, apexRow, cRow, aRow, b, 0, rnd, "TC03");
         for (int i = 0; i < 40; ++i) {
             assertRay(0, rowBvh, rowQuery, apexRow, new Point3D(2 * i - 20, 0, -10), "TC03: through triangle " + i);
@@ -226,7 +231,8 @@ class BundleGatherTest {
         // renderer sees a point near the terminator: hundreds of boxes meet the pyramid, true, and the
         // rays (into the mesh blocked, away from it open) agree with the tree
         List<Triangle> mesh = SphereMesh.triangles(Point3D.ZERO, 5, 24, 48);
-        BoundingVolumeHierarchy meshBvh = BoundingVolumeHierarchy.build(new Geometries(mesh.toArray(new Intersectable[0])));
+        BoundingVolumeHierarchy meshBvh =
+                BoundingVolumeHierarchy.build(new Geometries(mesh.toArray(new Intersectable[0])));
         Query meshQuery = meshBvh.newQuery();
         Point3D equator = new Point3D(5, 0, 0);
         Triangle nearest = mesh.get(0);
@@ -253,7 +259,8 @@ class BundleGatherTest {
         int blockedOnRow = assertBundle(rowBvh, rowQuery, onRow, cAcross, a, bAcross, THICK, rnd, "TC06");
         assertTrue(blockedOnRow > 0 && blockedOnRow < 200, "TC06: some rays blocked, some open: " + blockedOnRow);
         // the ray from the apex to the square's centre (5, 0, 1), moved 0.1 down: blocked; moved 0.1 up: open
-        assertRay(0, rowBvh, rowQuery, new Point3D(5, 0, -0.1), new Point3D(5, 0, 0.9), "TC06: from below the triangle");
+        assertRay(0, rowBvh, rowQuery, new Point3D(5, 0, -0.1), new Point3D(5, 0, 0.9),
+                "TC06: from below the triangle");
         assertRay(1, rowBvh, rowQuery, new Point3D(5, 0, 0.1), new Point3D(5, 0, 1.1), "TC06: from above the triangle");
 
         // ===== Boundary Values Tests =====
@@ -280,7 +287,8 @@ class BundleGatherTest {
             BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(empty);
             Query query = bvh.newQuery();
             assertFalse(gather(bvh, query, up, below, a, b), "TC12: an empty composite gathers nothing");
-            assertEquals(1, gathered(bvh, new Ray(up, new Vector(0, 0, -1)), 6, MIN_K, query), 0, "TC12: nothing may block");
+            assertEquals(1, gathered(bvh, new Ray(up, new Vector(0, 0, -1)), 6, MIN_K, query), 0,
+                    "TC12: nothing may block");
         }
         // TC13: a pyramid whose section at z = 0 is x ∈ [−0.5, 31.5]: exactly 32 triangles, true, and
         // the rays through each of them blocked (random rays of the row's bundles seldom meet a triangle:
@@ -327,7 +335,8 @@ class BundleGatherTest {
         BoundingVolumeHierarchy floorBvh = BoundingVolumeHierarchy.build(floor);
         Query floorQuery = floorBvh.newQuery();
         assertFalse(gather(floorBvh, floorQuery, up, above, a, b), "TC16: a plane the pyramid does not reach");
-        assertEquals(0, assertBundle(floorBvh, floorQuery, up, above, a, b, 0, rnd, "TC16"), "TC16: no ray may be blocked");
+        assertEquals(0, assertBundle(floorBvh, floorQuery, up, above, a, b, 0, rnd, "TC16"),
+                "TC16: no ray may be blocked");
         assertTrue(gather(floorBvh, floorQuery, up, below, a, b), "TC16: a plane the pyramid crosses");
         assertEquals(200, assertBundle(floorBvh, floorQuery, up, below, a, b, 0, rnd, "TC16"),
                 "TC16: every ray must be blocked");
@@ -343,7 +352,8 @@ class BundleGatherTest {
         BoundingVolumeHierarchy twoBvh = BoundingVolumeHierarchy.build(two);
         Query twoQuery = twoBvh.newQuery();
         assertTrue(gather(twoBvh, twoQuery, up, below, a, b), "TC19: only the crossed plane must be gathered");
-        assertEquals(200, assertBundle(twoBvh, twoQuery, up, below, a, b, 0, rnd, "TC19"), "TC19: every ray must be blocked");
+        assertEquals(200, assertBundle(twoBvh, twoQuery, up, below, a, b, 0, rnd, "TC19"),
+                "TC19: every ray must be blocked");
         // TC20: the plane z = −0.05 just below an apex (0, 0, 0) whose pyramid goes up to z = 5: set aside
         // by a thin pyramid (false), kept by one 0.1 thick (true), whose rays starting below it are blocked
         Geometries low = new Geometries(new Plane(new Point3D(0, 0, -0.05), new Vector(0, 0, 1)));
@@ -351,12 +361,14 @@ class BundleGatherTest {
         Query lowQuery = lowBvh.newQuery();
         Point3D top = new Point3D(0, 0, 5);
         assertFalse(gather(lowBvh, lowQuery, Point3D.ZERO, top, a, b), "TC20: the plane 0.05 behind a thin pyramid");
-        assertTrue(gather(lowBvh, lowQuery, Point3D.ZERO, top, a, b, THICK), "TC20: the plane 0.05 behind a thick pyramid");
+        assertTrue(gather(lowBvh, lowQuery, Point3D.ZERO, top, a, b, THICK),
+                "TC20: the plane 0.05 behind a thick pyramid");
         int blockedLow = assertBundle(lowBvh, lowQuery, Point3D.ZERO, top, a, b, THICK, rnd, "TC20");
         assertTrue(blockedLow > 0 && blockedLow < 200, "TC20: rays from below blocked, from above open: " + blockedLow);
         // TC21: a refused (flat) frustum sets nothing aside: gather gives true over the row (a subtree), and
         // rays through each triangle are blocked, between them open
-        assertFalse(rowQuery.getFrustum().set(5, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0), "TC21: a flat pyramid is refused");
+        assertFalse(rowQuery.getFrustum().set(5, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0),
+                "TC21: a flat pyramid is refused");
         assertTrue(rowBvh.gather(rowQuery), "TC21: after a refused set everything must be gathered");
         for (int i = 0; i < 40; ++i) {
             assertRay(0, rowBvh, rowQuery, new Point3D(i, 0, 5), new Point3D(i, 0, -5), "TC21: through triangle " + i);
@@ -364,7 +376,8 @@ class BundleGatherTest {
                     "TC21: past triangle " + i);
         }
         // TC22: a refused frustum over the ball (one body, kept one by one): true, the ray through it blocked
-        assertFalse(ballQuery.getFrustum().set(0, 0, 7, 0, 0, 7, 1, 0, 0, 0, 1, 0, 0), "TC22: a flat pyramid is refused");
+        assertFalse(ballQuery.getFrustum().set(0, 0, 7, 0, 0, 7, 1, 0, 0, 0, 1, 0, 0),
+                "TC22: a flat pyramid is refused");
         assertTrue(ballBvh.gather(ballQuery), "TC22: after a refused set the ball must be gathered");
         assertRay(0, ballBvh, ballQuery, up, below, "TC22: the ray through the ball");
         assertRay(1, ballBvh, ballQuery, new Point3D(3, 0, 5), new Point3D(3, 0, -1), "TC22: a ray past the ball");
@@ -437,8 +450,10 @@ class BundleGatherTest {
             assertEquals(1, gathered[0], () -> "TC02: bundle " + number + " must leave on the normal's side");
             assertEquals(0, gathered[1], () -> "TC02: bundle " + number + " from " + p + " must gather nothing");
             for (double[] ray : shadowRays(rnd, p, n, c, a, b, 20)) {
-                assertEquals(1, scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), MIN_K), 0, "TC02: a ray leaving a convex mesh is open");
-                assertEquals(1, bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), MIN_K), 0, "TC02: a ray leaving a convex mesh is open (gathered)");
+                assertEquals(1, rayTransmittance(scan, scanQuery, ray, MIN_K), 0,
+                        "TC02: a ray leaving a convex mesh is open");
+                assertEquals(1, gatheredRay(bvh, query, ray, MIN_K), 0,
+                        "TC02: a ray leaving a convex mesh is open (gathered)");
             }
             // the same pyramid without the back face
             Point3D apex = p.add(n);
@@ -617,7 +632,8 @@ class BundleGatherTest {
             assertTrue(floorQuery.getFrustum().leftBehindOrigins(),
                     "TC12: " + kind + ": the floor between the starts must be left out");
             assertEquals(1, floorGathered[1], "TC12: " + kind + ": a bundle that left triangles out must not be open");
-            assertEquals(1, floorBvh.bundleRayTransmittance(floorQuery.setRay(up[0], up[1], up[2], up[3], up[4], up[5], up[6]), 0), 0, "TC12: " + kind + ": a ray from a start over the floor");
+            assertEquals(1, gatheredRay(floorBvh, floorQuery, up, 0), 0, "TC12: " + kind
+                    + ": a ray from a start over the floor");
         }
     }
 }

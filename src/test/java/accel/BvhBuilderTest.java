@@ -106,13 +106,15 @@ class BvhBuilderTest {
     void testPadBoxes() {
         // ===== Boundary Values Tests =====
         // TC11: a sharp triangle (tip at x = −1) hit 3.5e-9 beyond its tip (barycentric tolerance 1e-9)
-        Geometries sharp = new Geometries(new Triangle(new Point3D(-1, 0, 0), new Point3D(1, -0.01, 0), new Point3D(1, 0.01, 0)));
+        Geometries sharp = new Geometries(new Triangle(new Point3D(-1, 0, 0), new Point3D(1, -0.01, 0),
+                new Point3D(1, 0.01, 0)));
         Ray pastTip = new Ray(new Point3D(-1 - 3.5e-9, 0, 5), new Vector(0, 0, -1));
         assertNotNull(reference(sharp, pastTip), "TC11: the triangle's tolerance must take this ray");
         assertHitEverywhere(sharp, pastTip, new Point3D(-1 - 3.5e-9, 0, 0), "TC11");
 
         // TC12: the same sliver as a Polygon (edge tolerance 1e-9 of its size): hit 1e-7 beyond its tip
-        Geometries sliver = new Geometries(new Polygon(new Point3D(-1, 0, 0), new Point3D(1, -0.01, 0), new Point3D(1, 0.01, 0)));
+        Geometries sliver = new Geometries(new Polygon(new Point3D(-1, 0, 0), new Point3D(1, -0.01, 0),
+                new Point3D(1, 0.01, 0)));
         Ray pastSliver = new Ray(new Point3D(-1 - 1e-7, 0, 5), new Vector(0, 0, -1));
         assertNotNull(reference(sliver, pastSliver), "TC12: the polygon's tolerance must take this ray");
         assertHitEverywhere(sliver, pastSliver, new Point3D(-1 - 1e-7, 0, 0), "TC12");

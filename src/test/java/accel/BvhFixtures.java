@@ -12,9 +12,11 @@ import static testutil.TestBundles.assertPacket;
 import static testutil.TestBundles.boxesMeeting;
 import static testutil.TestBundles.gatherLeaving;
 import static testutil.TestBundles.gathered;
+import static testutil.TestBundles.gatheredRay;
 import static testutil.TestBundles.meeting;
 import static testutil.TestBundles.pointOnTriangle;
 import static testutil.TestBundles.randomHalfSide;
+import static testutil.TestBundles.rayTransmittance;
 import static testutil.TestBundles.shadowRays;
 import static testutil.TestBundles.squarePoint;
 import static testutil.TestBundles.stray;
@@ -157,7 +159,8 @@ final class BvhFixtures {
                     double expected = transmittance(bvh, ray, distance, minK, treeQuery);
                     double actual = gathered(bvh, ray, distance, minK, query);
                     if (opaque) {
-                        assertTrue(expected == 0 || expected == 1, () -> label.get() + ": an opaque scene gives 0 or 1");
+                        assertTrue(expected == 0 || expected == 1, () -> label.get()
+                                + ": an opaque scene gives 0 or 1");
                         assertEquals(expected, actual, 0, label);
                     } else
                         assertEquals(expected, actual, 1e-12, label);
@@ -248,8 +251,8 @@ final class BvhFixtures {
     }
 
     /**
-     * A random bundle leaving a random point of a mesh's triangle (or one of its vertices): its square straddling the tangent
-     * plane (even bundles: beside the point, tilted across the plane) or lying on one side of it (odd
+     * A random bundle leaving a random point of a mesh's triangle (or one of its vertices): its square straddling
+     * the tangent plane (even bundles: beside the point, tilted across the plane) or lying on one side of it (odd
      * bundles: over it, a quarter of them under it). Every ray's gathered transmittance, after the
      * gather as the renderer sets it, equals the scan's transmittance, exactly, with the cut-off and
      * without, and so does the packet's; and no gathered triangle skipped for a ray by its start is
@@ -307,11 +310,11 @@ final class BvhFixtures {
         for (double[] ray : rays) {
             Supplier<String> label = () -> bundleLabel + " ray " + Arrays.toString(ray);
             for (double minK : new double[] { MIN_K, 0 }) {
-                double expected = scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK);
-                assertEquals(expected, bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK), 0, label);
+                double expected = rayTransmittance(scan, scanQuery, ray, minK);
+                assertEquals(expected, gatheredRay(bvh, query, ray, minK), 0, label);
             }
             ++counts.rays;
-            if (scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), 0) < 1)
+            if (rayTransmittance(scan, scanQuery, ray, 0) < 1)
                 ++counts.darkened;
             packet.add(new Ray(new Point3D(ray[0], ray[1], ray[2]), new Vector(ray[3], ray[4], ray[5])));
             distances.add(ray[6]);
@@ -438,10 +441,10 @@ final class BvhFixtures {
      * @param scanQuery the scan's scratch space
      */
     record Straddling(Surface surface, Point3D p, Point3D c, Vector a, Vector b, BoundingVolumeHierarchy bvh,
-                              Query query, BoundingVolumeHierarchy scan, Query scanQuery) {
+                      Query query, BoundingVolumeHierarchy scan, Query scanQuery) {
         /**
-         * Builds the scene and gathers the bundle as {@link testutil.TestBundles#gatherLeaving} sets it, asserting that its
-         * square straddles the surface, that something is gathered, one by one.
+         * Builds the scene and gathers the bundle as {@link testutil.TestBundles#gatherLeaving} sets it, asserting
+         * that its square straddles the surface, that something is gathered, one by one.
          *
          * @param surface the surface
          * @param p       the point the rays leave
@@ -488,8 +491,9 @@ final class BvhFixtures {
         double assertAsScan(double[] ray, String label) {
             double expected = 0;
             for (double minK : new double[] { MIN_K, 0 }) {
-                expected = scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK);
-                assertEquals(expected, bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK), 0, () -> label + " " + Arrays.toString(ray) + " minK " + minK);
+                expected = rayTransmittance(scan, scanQuery, ray, minK);
+                assertEquals(expected, gatheredRay(bvh, query, ray, minK), 0, () -> label + " " + Arrays.toString(ray)
+                        + " minK " + minK);
             }
             return expected;
         }

@@ -7,7 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.BruteForce.MIN_K;
 import static testutil.TestBundles.assertPacket;
 import static testutil.TestBundles.gatherLeaving;
+import static testutil.TestBundles.gatheredRay;
 import static testutil.TestBundles.pointOnTriangle;
+import static testutil.TestBundles.rayTransmittance;
 import static testutil.TestBundles.shadowRays;
 import static testutil.TestRandom.randomUnit;
 
@@ -216,11 +218,11 @@ class ClosedMeshBlockersTest {
                 Supplier<String> label = () -> bundleLabel + " ray " + Arrays.toString(ray);
                 double expected = 1;
                 for (double minK : new double[] { MIN_K, 0 }) {
-                    expected = scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK);
+                    expected = rayTransmittance(scan, scanQuery, ray, minK);
                     if (blocked)
                         assertEquals(0, expected, 0, () -> label.get() + ": a ray of a blocked bundle must be blocked");
                     else
-                        assertEquals(expected, bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK), 0, label);
+                        assertEquals(expected, gatheredRay(bvh, query, ray, minK), 0, label);
                 }
                 ++counts.rays;
                 if (expected < 1) // without the cut-off
@@ -324,7 +326,8 @@ class ClosedMeshBlockersTest {
             gatherLeaving(scan, scanQuery, p, n, c, a, b, false);
             assertFalse(scan.blocksBundle(scanQuery), "TC11: the scan must block no bundle (mesh " + m + ")");
             for (double[] ray : shadowRays(rnd, p, n, c, a, b, 10))
-                assertEquals(0, scan.transmittance(scanQuery.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), 0), 0, "TC11: a ray under mesh " + m + " must be blocked");
+                assertEquals(0, rayTransmittance(scan, scanQuery, ray, 0), 0, "TC11: a ray under mesh " + m
+                        + " must be blocked");
         }
     }
 }

@@ -57,7 +57,8 @@ class ClosestHitWalkTest {
                 if (expected != null)
                     ++hits;
                 assertSameHit(expected, bvh.closestHit(ray, query), ray, "TC01: scene " + s + " ray " + r + " (tree)");
-                assertSameHit(expected, scan.closestHit(ray, scanQuery), ray, "TC01: scene " + s + " ray " + r + " (scan)");
+                assertSameHit(expected, scan.closestHit(ray, scanQuery), ray, "TC01: scene " + s + " ray " + r
+                        + " (scan)");
             }
         }
         // the rays are aimed so that most of them hit something: the comparison is not vacuous
@@ -113,7 +114,8 @@ class ClosestHitWalkTest {
         Geometries square = new Geometries(lower, upper);
         Ray diagonal = new Ray(new Point3D(0.3, 0.3, 5), new Vector(0, 0, -1));
         assertHitEverywhere(square, diagonal, new Point3D(0.3, 0.3, 0), "TC01");
-        GeoPoint hit = BoundingVolumeHierarchy.build(square).closestHit(diagonal, BoundingVolumeHierarchy.build(square).newQuery());
+        GeoPoint hit = BoundingVolumeHierarchy.build(square).closestHit(diagonal,
+                BoundingVolumeHierarchy.build(square).newQuery());
         assertTrue(hit.geometry == lower || hit.geometry == upper, "TC01: one of the two triangles must be hit");
         // TC02: the course's query on the composite, for the same ray through the shared edge (null)
         assertNull(square.findGeoIntersections(diagonal), "TC02: the course's open triangles are missed on their edge");

@@ -180,7 +180,8 @@ class InnerBallTest {
         // TC15: two tetrahedra sharing an edge (a bow tie): that edge used four times, closed
         double[] bowTie = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1 };
         assertTrue(InnerBall.isClosed(new TriangleMesh(bowTie, concat(TETRAHEDRON_FACES,
-                new int[] { 0, 1, 4, 0, 5, 1, 0, 4, 5, 1, 5, 4 }))), "TC15: an edge shared by four triangles is closed");
+                new int[] { 0, 1, 4, 0, 5, 1, 0, 4, 5, 1, 5,
+                        4 }))), "TC15: an edge shared by four triangles is closed");
     }
 
     /**
@@ -250,7 +251,8 @@ class InnerBallTest {
         ball = InnerBall.of(new TriangleMesh(TETRAHEDRON_VERTICES, TETRAHEDRON_FACES));
         assertNotNull(ball, "TC03: a tetrahedron must have an inner ball");
         assertCentre(new Point3D(0.25, 0.25, 0.25), ball, DELTA, "TC03: the ball must lie at the corners' mean");
-        assertEquals(shrunk(0.25 / Math.sqrt(3), 1), ball.radius, DELTA, "TC03: the radius must reach the slanted face");
+        assertEquals(shrunk(0.25 / Math.sqrt(3), 1), ball.radius, DELTA,
+                "TC03: the radius must reach the slanted face");
         // TC04: open meshes (a terrain, a tetrahedron without a face, one triangle): no ball
         assertNull(InnerBall.of(benchmark.Terrain.mesh(200)), "TC04: a terrain has no inner ball");
         assertNull(InnerBall.of(new TriangleMesh(TETRAHEDRON_VERTICES, new int[] { 0, 2, 1, 0, 1, 3, 0, 3, 2 })),

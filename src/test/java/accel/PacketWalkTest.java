@@ -46,7 +46,8 @@ class PacketWalkTest {
             for (int i = -5; i < 5; ++i)
                 for (int j = -5; j < 5; ++j) {
                     Material material = z == 0 ? glass : opaque;
-                    plates.add(new Triangle(new Point3D(i, j, z), new Point3D(i + 1, j, z), new Point3D(i + 1, j + 1, z))
+                    plates.add(new Triangle(new Point3D(i, j, z), new Point3D(i + 1, j, z),
+                            new Point3D(i + 1, j + 1, z))
                                     .setMaterial(material),
                             new Triangle(new Point3D(i, j, z), new Point3D(i + 1, j + 1, z), new Point3D(i, j + 1, z))
                                     .setMaterial(material));
@@ -215,7 +216,8 @@ class PacketWalkTest {
      */
     private static double[] cellsPacket(BoundingVolumeHierarchy bvh, Query query, double[] targets, double minK,
                                         String tc) {
-        assertTrue(query.getFrustum().set(0, 0, -50, 0, 0, 1, 4.5, 0, 0, 0, 4.5, 0, 0), tc + ": the pyramid must be set");
+        assertTrue(query.getFrustum().set(0, 0, -50, 0, 0, 1, 4.5, 0, 0, 0, 4.5, 0, 0), tc
+                + ": the pyramid must be set");
         bvh.gather(query);
         assertTrue(query.isSubtreeGathered(), tc + ": the bundle meets more than 32 bodies: a packet is walked");
         Point3D apex = new Point3D(0, 0, -50);

@@ -47,9 +47,11 @@ class RayStateTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: down the z axis through a column of spheres: the top sphere at (i, j, 3.4)
-        assertHitEverywhere(grid, new Ray(new Point3D(1, -2, 10), new Vector(0, 0, -1)), new Point3D(1, -2, 3.4), "TC01");
+        assertHitEverywhere(grid, new Ray(new Point3D(1, -2, 10), new Vector(0, 0, -1)), new Point3D(1, -2, 3.4),
+                "TC01");
         // TC02: along −x, direction components −0.0: the triangle at x = 3.5 first, at (3.5, 0, 0)
-        assertHitEverywhere(grid, new Ray(new Point3D(10, 0, 0), new Vector(-1, -0.0, -0.0)), new Point3D(3.5, 0, 0), "TC02");
+        assertHitEverywhere(grid, new Ray(new Point3D(10, 0, 0), new Vector(-1, -0.0, -0.0)), new Point3D(3.5, 0, 0),
+                "TC02");
         // TC03: along +y between the spheres' columns: no hit
         assertHitEverywhere(grid, new Ray(new Point3D(0.5, -10, 0.5), new Vector(0, 1, 0)), null, "TC03");
         // TC04: random rays along the axes, ±0.0 components, from grid points and half-grid points
@@ -71,7 +73,8 @@ class RayStateTest {
         assertHitEverywhere(grid, new Ray(new Point3D(0.4, 0, 10), new Vector(0, 0, -1)), null, "TC11");
         // TC12: a ray down z starting exactly on the top of the grid's box (z = 3.4), on the top of a
         // sphere: the start does not count, so the sphere's bottom at (0, 0, 2.6)
-        assertHitEverywhere(grid, new Ray(new Point3D(0, 0, 3.4), new Vector(0, 0, -1)), new Point3D(0, 0, 2.6), "TC12");
+        assertHitEverywhere(grid, new Ray(new Point3D(0, 0, 3.4), new Vector(0, 0, -1)), new Point3D(0, 0, 2.6),
+                "TC12");
         // TC13: the same ray up: it leaves the grid, no hit
         assertHitEverywhere(grid, new Ray(new Point3D(0, 0, 3.4), new Vector(0, 0, 1)), null, "TC13");
     }
@@ -88,19 +91,24 @@ class RayStateTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: from the middle of face x = 0 into the cube: the opposite face at (1, 0.5, 0.5)
-        assertHitEverywhere(cube, new Ray(new Point3D(0, 0.5, 0.5), new Vector(1, 0, 0)), new Point3D(1, 0.5, 0.5), "TC01");
+        assertHitEverywhere(cube, new Ray(new Point3D(0, 0.5, 0.5), new Vector(1, 0, 0)), new Point3D(1, 0.5, 0.5),
+                "TC01");
         // TC02: the same with the ball inside: the ball at (0.25, 0.5, 0.5)
-        assertHitEverywhere(withBall, new Ray(new Point3D(0, 0.5, 0.5), new Vector(1, 0, 0)), new Point3D(0.25, 0.5, 0.5), "TC02");
+        assertHitEverywhere(withBall, new Ray(new Point3D(0, 0.5, 0.5), new Vector(1, 0, 0)),
+                new Point3D(0.25, 0.5, 0.5), "TC02");
         // TC03: from the face out of the cube: no hit
         assertHitEverywhere(withBall, new Ray(new Point3D(0, 0.5, 0.5), new Vector(-1, 0, 0)), null, "TC03");
 
         // ===== Boundary Values Tests =====
         // TC11: from face x = 0 along it (x component 0): the edge of face y = 1 at (0, 1, 0.5)
-        assertHitEverywhere(cube, new Ray(new Point3D(0, 0.5, 0.5), new Vector(0, 1, 0)), new Point3D(0, 1, 0.5), "TC11");
+        assertHitEverywhere(cube, new Ray(new Point3D(0, 0.5, 0.5), new Vector(0, 1, 0)), new Point3D(0, 1, 0.5),
+                "TC11");
         // TC12: from the plane of face x = 0, outside the cube, along it (−0.0): face y = 1's edge at (0, 1, 0.5)
-        assertHitEverywhere(cube, new Ray(new Point3D(0, 2, 0.5), new Vector(-0.0, -1, 0)), new Point3D(0, 1, 0.5), "TC12");
+        assertHitEverywhere(cube, new Ray(new Point3D(0, 2, 0.5), new Vector(-0.0, -1, 0)), new Point3D(0, 1, 0.5),
+                "TC12");
         // TC13: from face x = 1 (the box's top in x) along z: the edge of face z = 0 at (1, 0.5, 0)
-        assertHitEverywhere(cube, new Ray(new Point3D(1, 0.5, 0.5), new Vector(0, 0, -1)), new Point3D(1, 0.5, 0), "TC13");
+        assertHitEverywhere(cube, new Ray(new Point3D(1, 0.5, 0.5), new Vector(0, 0, -1)), new Point3D(1, 0.5, 0),
+                "TC13");
         // TC14: from a corner of the box along an edge: the other end of the edge, (1, 0, 0)
         assertHitEverywhere(cube, new Ray(new Point3D(0, 0, 0), new Vector(1, 0, 0)), new Point3D(1, 0, 0), "TC14");
         // TC15: random rays from random points of the six faces, random directions and along the faces
@@ -131,7 +139,8 @@ class RayStateTest {
         Point3D[] c = new Point3D[8];
         for (int i = 0; i < 8; ++i)
             c[i] = new Point3D((i & 1) == 0 ? lo : hi, (i & 2) == 0 ? lo : hi, (i & 4) == 0 ? lo : hi);
-        int[][] faces = { { 0, 2, 6, 4 }, { 1, 5, 7, 3 }, { 0, 4, 5, 1 }, { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 6, 7, 5 } };
+        int[][] faces = { { 0, 2, 6, 4 }, { 1, 5, 7, 3 }, { 0, 4, 5, 1 }, { 2, 3, 7, 6 }, { 0, 1, 3, 2 },
+                { 4, 6, 7, 5 } };
         List<Intersectable> triangles = new ArrayList<>();
         for (int[] f : faces) {
             triangles.add(new Triangle(c[f[0]], c[f[1]], c[f[2]]));
@@ -148,7 +157,8 @@ class RayStateTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: a lone sphere of radius 2, the ray from (0.5, 0, 0) along x: (2, 0, 0)
         Sphere big = new Sphere(Point3D.ZERO, 2);
-        assertHitEverywhere(new Geometries(big), new Ray(new Point3D(0.5, 0, 0), new Vector(1, 0, 0)), new Point3D(2, 0, 0), "TC01");
+        assertHitEverywhere(new Geometries(big), new Ray(new Point3D(0.5, 0, 0), new Vector(1, 0, 0)),
+                new Point3D(2, 0, 0), "TC01");
         // TC02: with a small sphere inside it and 200 small spheres around: the small one at (0.75, 0, 0)
         Random rnd = new Random(3);
         Geometries crowd = new Geometries(big, new Sphere(new Point3D(1, 0, 0), 0.25));

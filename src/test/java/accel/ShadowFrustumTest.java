@@ -119,9 +119,11 @@ class ShadowFrustumTest {
         // TC04: the apex in the base's plane, outside the base: false
         assertFalse(frustum.set(5, 7, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC04: apex in the base's plane is flat");
         // TC05: after a flat pyramid the same instance is set again properly: true, and it works
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC05: a flat pyramid must not spoil the next set");
+        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0),
+                "TC05: a flat pyramid must not spoil the next set");
         assertTrue(meets(frustum, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC05: the reset pyramid must meet a box inside it");
-        assertFalse(meets(frustum, -0.5, -0.5, -2, 0.5, 0.5, -1), "TC05: the reset pyramid must reject a box behind it");
+        assertFalse(meets(frustum, -0.5, -0.5, -2, 0.5, 0.5, -1),
+                "TC05: the reset pyramid must reject a box behind it");
         // TC06: a proper pyramid with a thickness 0.1 (the renderer's thick bundles): true
         assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC06: a thick pyramid must be set");
         // TC07: the apex in the base's plane with a thickness 0.1: still flat, false
@@ -139,7 +141,8 @@ class ShadowFrustumTest {
         // TC15: the apex just off the base's plane (1e-3 of a size of 28, far above the flatness 2.8e-8): true
         assertTrue(frustum.set(0, 0, 10 - 1e-3, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC15: a very low pyramid is not flat");
         // TC16: the apex off the plane by 1e-12 (below the flatness): false
-        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC16: a pyramid this low counts as flat");
+        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0),
+                "TC16: a pyramid this low counts as flat");
         // TC17: a tiny light (edge 2e-3) far away (distance 50): a thin pyramid, still true
         assertTrue(frustum.set(0, 0, 0, 0, 0, 50, 1e-3, 0, 0, 0, 1e-3, 0, 0), "TC17: a thin pyramid must be set");
         // TC18: a thickness far larger than the pyramid (10 around a pyramid of size 28): true
@@ -197,8 +200,10 @@ class ShadowFrustumTest {
         // TC14: a box touching the base from beyond (z 10..11): true
         assertTrue(meets(frustum, -1, -1, 10, 1, 1, 11), "TC14: a box touching the base must be met");
         // TC15: beyond the base by 1e-6 (within the margin): true; by 1e-4: false
-        assertTrue(meets(frustum, -1, -1, 10 + 1e-6, 1, 1, 11), "TC15: a box within the margin of the base must be met");
-        assertFalse(meets(frustum, -1, -1, 10 + 1e-4, 1, 1, 11), "TC15: a box beyond the base's margin must not be met");
+        assertTrue(meets(frustum, -1, -1, 10 + 1e-6, 1, 1, 11),
+                "TC15: a box within the margin of the base must be met");
+        assertFalse(meets(frustum, -1, -1, 10 + 1e-4, 1, 1, 11),
+                "TC15: a box beyond the base's margin must not be met");
         // TC16: a box whose corner touches the apex from behind (max corner (0, 0, 0)): true
         assertTrue(meets(frustum, -1, -1, -1, 0, 0, 0), "TC16: a box touching the apex must be met");
         // TC17: a box touching a base corner (2, 2, 10) from outside (min corner there): true
@@ -208,7 +213,8 @@ class ShadowFrustumTest {
         assertFalse(meets(frustum, 1.8, 0, 2, 1.8, 0, 2), "TC18: a point box outside must not be met");
         // TC19: a margin of 2.8e-6 in the standard pyramid: a box 2e-6 behind the apex is met, 5e-6 behind it not
         assertTrue(meets(frustum, -1, -1, -1, 1, 1, -2e-6), "TC19: within the margin behind the apex");
-        assertFalse(meets(frustum, -1, -1, -1, 1, 1, -5e-6), "TC19: beyond the margin (" + MARGIN + ") behind the apex");
+        assertFalse(meets(frustum, -1, -1, -1, 1, 1, -5e-6), "TC19: beyond the margin (" + MARGIN
+                + ") behind the apex");
     }
 
     /** Test method for {@link ShadowFrustum#meetsBox(float[], int)}: the same answers as in doubles. */
@@ -229,7 +235,8 @@ class ShadowFrustumTest {
         // ===== Boundary Values Tests =====
         // TC11: outside the side x = z/5 by 0.98e-6 (within the margin 2.8e-6): true; by 0.98e-4: false
         assertTrue(meetsFloats(frustum, 1 + 1e-6, -0.1, 0, 1.5, 0.1, 5), "TC11: a box within the margin must be met");
-        assertFalse(meetsFloats(frustum, 1 + 1e-4, -0.1, 0, 1.5, 0.1, 5), "TC11: a box beyond the margin must not be met");
+        assertFalse(meetsFloats(frustum, 1 + 1e-4, -0.1, 0, 1.5, 0.1, 5),
+                "TC11: a box beyond the margin must not be met");
         // TC12: a box touching the apex from behind (max corner (0, 0, 0)): true
         assertTrue(meetsFloats(frustum, -1, -1, -1, 0, 0, 0), "TC12: a box touching the apex must be met");
         // TC13: after a refused set every box is met: true
@@ -248,27 +255,34 @@ class ShadowFrustumTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a triangle inside the pyramid: true
-        assertTrue(meetsTriangle(frustum, -0.5, -0.5, 5, 0.5, -0.5, 5, 0, 0.5, 6), "TC01: a triangle inside must be met");
+        assertTrue(meetsTriangle(frustum, -0.5, -0.5, 5, 0.5, -0.5, 5, 0, 0.5, 6),
+                "TC01: a triangle inside must be met");
         // TC02: a triangle across the side x = z/5 (from x 0 to 3 at z 5, where the side is at x 1): true
-        assertTrue(meetsTriangle(frustum, 0, -0.5, 5, 3, -0.5, 5, 3, 0.5, 5), "TC02: a triangle across a side must be met");
+        assertTrue(meetsTriangle(frustum, 0, -0.5, 5, 3, -0.5, 5, 3, 0.5, 5),
+                "TC02: a triangle across a side must be met");
         // TC03: a triangle around the whole pyramid (its plane z = 5 cuts it): true
-        assertTrue(meetsTriangle(frustum, -50, -50, 5, 50, -50, 5, 0, 50, 5), "TC03: a triangle around the pyramid must be met");
+        assertTrue(meetsTriangle(frustum, -50, -50, 5, 50, -50, 5, 0, 50, 5),
+                "TC03: a triangle around the pyramid must be met");
         // TC04: the triangle (1.1, 0, 0), (2.5, 0, 10), (5, 0, 10) in the plane y = 0, which crosses the
         // pyramid: its box (x 1.1..5, z 0..10) meets the pyramid, but all three vertices are outside the
         // side x = z/5 (by 1.08, 0.49 and 2.94): false
         assertTrue(frustum.meetsPlane(0, 1, 0, 1.1, 0, 0), "TC04: the triangle's plane must cross the pyramid");
         assertTrue(meets(frustum, 1.1, 0, 0, 5, 0, 10), "TC04: the triangle's box must meet the pyramid");
-        assertFalse(meetsTriangle(frustum, 1.1, 0, 0, 2.5, 0, 10, 5, 0, 10), "TC04: a triangle beside a side must not be met");
+        assertFalse(meetsTriangle(frustum, 1.1, 0, 0, 2.5, 0, 10, 5, 0, 10),
+                "TC04: a triangle beside a side must not be met");
         // TC05: a triangle behind the apex and beside it (x 0.5 to 1, z −1 to −3, outside the side x = z/5): false
-        assertFalse(meetsTriangle(frustum, 0.5, -1, -1, 1, 1, -1, 0.8, 0, -3), "TC05: a triangle behind the apex must not be met");
+        assertFalse(meetsTriangle(frustum, 0.5, -1, -1, 1, 1, -1, 0.8, 0, -3),
+                "TC05: a triangle behind the apex must not be met");
         // TC06: a triangle beyond the base (z 10.5 to 12), wider than the base: false
-        assertFalse(meetsTriangle(frustum, -5, -5, 10.5, 5, -5, 12, 0, 5, 11), "TC06: a triangle beyond the base must not be met");
+        assertFalse(meetsTriangle(frustum, -5, -5, 10.5, 5, -5, 12, 0, 5, 11),
+                "TC06: a triangle beyond the base must not be met");
 
         // ===== Boundary Values Tests =====
         // The triangle of TC04 with its first vertex moved to (1 + ε·√1.04, 0, 5), ε outside the side
         // x = z/5 (the vertex's edge towards the others points away from the pyramid).
         // TC11: the vertex on the side (ε = 0): true
-        assertTrue(meetsTriangle(frustum, 1, 0, 5, 2.5, 0, 10, 5, 0, 10), "TC11: a triangle touching a side must be met");
+        assertTrue(meetsTriangle(frustum, 1, 0, 5, 2.5, 0, 10, 5, 0, 10),
+                "TC11: a triangle touching a side must be met");
         // TC12: ε = 1e-6, within the margin 2.8e-6: true
         assertTrue(meetsTriangle(frustum, 1 + 1e-6 * len, 0, 5, 2.5, 0, 10, 5, 0, 10),
                 "TC12: a triangle within the margin of a side must be met");
@@ -280,19 +294,22 @@ class ShadowFrustumTest {
         // about 2e-4 here, so the ray from the apex to the base's edge point (2, 0, 10) hits it at
         // (1, 0, 5): true
         double[] huge = { 1 + 1e-4 * len, 0, 5, 1e5, -1e5, 5, 1e5, 1e5, 5 };
-        double t = Triangle.intersect(huge[0], huge[1], huge[2], huge[3] - huge[0], huge[4] - huge[1], huge[5] - huge[2],
+        double t = Triangle.intersect(huge[0], huge[1], huge[2], huge[3] - huge[0], huge[4] - huge[1],
+                huge[5] - huge[2],
                 huge[6] - huge[0], huge[7] - huge[1], huge[8] - huge[2], 0, 0, 0, 0, 2 / Math.sqrt(104), 0,
                 10 / Math.sqrt(104), Math.sqrt(104));
         assertTrue(t < Geometry.NO_HIT, "TC14: the ray along the side must hit the grown triangle");
         assertTrue(meetsTriangle(frustum, huge), "TC14: a triangle grown into the pyramid must be met");
         // TC15: a triangle whose vertex touches the apex from behind: true
-        assertTrue(meetsTriangle(frustum, 0, 0, 0, -1, 0, -1, 0, -1, -1), "TC15: a triangle touching the apex must be met");
+        assertTrue(meetsTriangle(frustum, 0, 0, 0, -1, 0, -1, 0, -1, -1),
+                "TC15: a triangle touching the apex must be met");
         // TC16: the triangle of TC13 in a pyramid 0.5 thick (within the thickness): true
         assertTrue(meetsTriangle(standard(0.5), 1 + 1e-4 * len, 0, 5, 2.5, 0, 10, 5, 0, 10),
                 "TC16: a triangle within the thickness must be met");
         // TC17: after a refused set every triangle is met: true
         assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC17: the flat pyramid must be refused");
-        assertTrue(meetsTriangle(frustum, 0.5, -1, -1, 1, 1, -1, 0.8, 0, -3), "TC17: a refused frustum must set no triangle aside");
+        assertTrue(meetsTriangle(frustum, 0.5, -1, -1, 1, 1, -1, 0.8, 0, -3),
+                "TC17: a refused frustum must set no triangle aside");
     }
 
     /**
@@ -321,9 +338,9 @@ class ShadowFrustumTest {
     }
 
     /**
-     * Test method for {@link ShadowFrustum#setBackFace} and {@link ShadowFrustum#hasBackFace}: the plane through the apex across a direction
-     * the whole base lies ahead along sets aside the triangles behind it, also around the apex where no
-     * other face does (boxes it leaves to the other faces); it is refused, setting nothing aside, when
+     * Test method for {@link ShadowFrustum#setBackFace} and {@link ShadowFrustum#hasBackFace}: the plane through the
+     * apex across a direction the whole base lies ahead along sets aside the triangles behind it, also around the
+     * apex where no other face does (boxes it leaves to the other faces); it is refused, setting nothing aside, when
      * the base does not lie ahead or the pyramid or direction is not proper, and the next
      * {@link ShadowFrustum#set} takes it away.
      */
@@ -375,7 +392,8 @@ class ShadowFrustumTest {
                     "TC11: a triangle " + behindBy + " behind the back face");
         }
         // TC12: the triangle moved into the back plane x + y + z = 0 itself: met
-        assertTrue(meetsTriangle(frustum, 1, 0, -1, -1, 1, 0, 0, -1, 1), "TC12: a triangle in the back plane must be met");
+        assertTrue(meetsTriangle(frustum, 1, 0, -1, -1, 1, 0, 0, -1, 1),
+                "TC12: a triangle in the back plane must be met");
         // The standard pyramid (apex 0, base (±2, ±2, 10), margin 2.8e-6) and directions (1, 0, s): the
         // corners (−2, ±2, 10) lie (10s − 2)/√(1 + s²) ahead
         ShadowFrustum standard = standard();
@@ -466,7 +484,8 @@ class ShadowFrustumTest {
         assertEquals(ShadowFrustum.ABOVE, frustum.originOf(px, py + ny, pz + nz, 0.8, 0.6, -0.2),
                 "TC01: slanted to n's side from p + n");
         // TC02: from p − n against n, and slanted to the other side: BELOW
-        assertEquals(ShadowFrustum.BELOW, frustum.originOf(px, py - ny, pz - nz, 0, -1, -1), "TC02: against n from p − n");
+        assertEquals(ShadowFrustum.BELOW, frustum.originOf(px, py - ny, pz - nz, 0, -1, -1),
+                "TC02: against n from p − n");
         assertEquals(ShadowFrustum.BELOW, frustum.originOf(px, py - ny, pz - nz, -0.8, 0.2, -0.6),
                 "TC02: slanted to the other side from p − n");
         // TC03: from p + n to the other side, from p − n to n's side: 0
@@ -753,7 +772,8 @@ class ShadowFrustumTest {
         assertTrue(frustum.meetsPlane(0, 0, 1, 0, 0, -1e-6), "TC15: a plane within the margin must be met");
         assertFalse(frustum.meetsPlane(0, 0, 1, 0, 0, -1e-4), "TC15: a plane beyond the margin must not be met");
         // TC16: x + y = 4 + 1e-4 (just past the corner): false
-        assertFalse(frustum.meetsPlane(s, s, 0, 2 + 5e-5, 2 + 5e-5, 0), "TC16: a plane past the corner must not be met");
+        assertFalse(frustum.meetsPlane(s, s, 0, 2 + 5e-5, 2 + 5e-5, 0),
+                "TC16: a plane past the corner must not be met");
     }
 
     /**
@@ -783,8 +803,10 @@ class ShadowFrustumTest {
         assertFalse(meets(thick, -1, -1, 10.6, 1, 1, 11), "TC04: a box 0.6 beyond the base is beyond the thickness");
         // TC05: beside the bounding box (x from 2.4, z 9.5..10, 0.392 off the side x = z/5): kept; from
         // x 2.6 (0.588 off the side, 0.6 off the bounding box): set aside
-        assertTrue(meets(thick, 2.4, -0.1, 9.5, 3, 0.1, 10), "TC05: a box 0.392 beside the base is within the thickness");
-        assertFalse(meets(thick, 2.6, -0.1, 9.5, 3, 0.1, 10), "TC05: a box 0.588 beside the base is beyond the thickness");
+        assertTrue(meets(thick, 2.4, -0.1, 9.5, 3, 0.1, 10),
+                "TC05: a box 0.392 beside the base is within the thickness");
+        assertFalse(meets(thick, 2.6, -0.1, 9.5, 3, 0.1, 10),
+                "TC05: a box 0.588 beside the base is beyond the thickness");
         // TC06: a box inside the pyramid stays met: true
         assertTrue(meets(thick, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC06: a box inside the thick pyramid must be met");
         // Planes.
@@ -802,20 +824,26 @@ class ShadowFrustumTest {
         assertFalse(thick.meetsPlane(1, 0, 0, 2.6, 0, 0), "TC09: a plane 0.6 beside the base is beyond the thickness");
         // TC10: the plane x + y = 4 + 0.4·√2, 0.4 past the corner (2, 2, 10): kept; 0.6 past it: set aside
         assertTrue(thick.meetsPlane(s, s, 0, 2 + 0.4 * s, 2 + 0.4 * s, 0), "TC10: a plane 0.4 past a corner is kept");
-        assertFalse(thick.meetsPlane(s, s, 0, 2 + 0.6 * s, 2 + 0.6 * s, 0), "TC10: a plane 0.6 past a corner is set aside");
+        assertFalse(thick.meetsPlane(s, s, 0, 2 + 0.6 * s, 2 + 0.6 * s, 0),
+                "TC10: a plane 0.6 past a corner is set aside");
 
         // ===== Boundary Values Tests =====
         // TC11: a box behind the apex by exactly the thickness 0.5: kept; by 0.5 + 1e-6 (within the margin
         // 2.8e-6): kept; by 0.5 + 1e-4: set aside
         assertTrue(meets(thick, -1, -1, -1, 1, 1, -0.5), "TC11: a box the thickness behind the apex must be kept");
         assertTrue(meets(thick, -1, -1, -1, 1, 1, -0.5 - 1e-6), "TC11: a box within thickness + margin must be kept");
-        assertFalse(meets(thick, -1, -1, -1, 1, 1, -0.5 - 1e-4), "TC11: a box beyond thickness + margin must be set aside");
+        assertFalse(meets(thick, -1, -1, -1, 1, 1, -0.5 - 1e-4),
+                "TC11: a box beyond thickness + margin must be set aside");
         // TC12: a box outside the side x = z/5 by 0.5 + 1e-6: kept; by 0.5 + 1e-4: set aside
-        assertTrue(meets(thick, 1 + (0.5 + 1e-6) * len, -0.1, 0, 2, 0.1, 5), "TC12: within thickness + margin of a side");
-        assertFalse(meets(thick, 1 + (0.5 + 1e-4) * len, -0.1, 0, 2, 0.1, 5), "TC12: beyond thickness + margin of a side");
+        assertTrue(meets(thick, 1 + (0.5 + 1e-6) * len, -0.1, 0, 2, 0.1, 5),
+                "TC12: within thickness + margin of a side");
+        assertFalse(meets(thick, 1 + (0.5 + 1e-4) * len, -0.1, 0, 2, 0.1, 5),
+                "TC12: beyond thickness + margin of a side");
         // TC13: the plane z = −0.5 − 1e-6: kept; z = −0.5 − 1e-4: set aside
-        assertTrue(thick.meetsPlane(0, 0, 1, 0, 0, -0.5 - 1e-6), "TC13: a plane within thickness + margin must be kept");
-        assertFalse(thick.meetsPlane(0, 0, 1, 0, 0, -0.5 - 1e-4), "TC13: a plane beyond thickness + margin must be set aside");
+        assertTrue(thick.meetsPlane(0, 0, 1, 0, 0, -0.5 - 1e-6),
+                "TC13: a plane within thickness + margin must be kept");
+        assertFalse(thick.meetsPlane(0, 0, 1, 0, 0, -0.5 - 1e-4),
+                "TC13: a plane beyond thickness + margin must be set aside");
         // TC14: the same instance set again with thickness 0: the box and plane of TC01/TC07 are set aside again
         assertTrue(thick.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC14: the thin pyramid must be set");
         assertFalse(meets(thick, 1.4, -0.1, 0, 2, 0.1, 5), "TC14: the thickness must not outlive its set");
@@ -862,7 +890,8 @@ class ShadowFrustumTest {
         assertTrue(frustum.meetsPlane(1, 0, 0, 1000, 0, 0), "TC11: after a refused set the far plane must be met");
         // TC12: refused for a pyramid just too low (1e-12): everything met
         assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC12: the proper pyramid must be set");
-        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC12: the low pyramid must be refused");
+        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0),
+                "TC12: the low pyramid must be refused");
         assertTrue(meets(frustum, far), "TC12: after a refused set the far box must be met");
         assertTrue(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC12: after a refused set the plane behind must be met");
         // TC13: a proper set after the refused one sets boxes and planes aside again
@@ -1114,7 +1143,8 @@ class ShadowFrustumTest {
         // TC05: TC01's ball with a mesh's box around the base (−20..20 each way): the light may be inside
         // the mesh: false, though the section lies inside the ball
         assertTrue(frustum.sectionInside(wide), "TC05: the section lies inside the ball");
-        assertFalse(crosses(frustum, wide, -20, -20, -20, 20, 20, 20), "TC05: a base inside the box must not be blocked");
+        assertFalse(crosses(frustum, wide, -20, -20, -20, 20, 20, 20),
+                "TC05: a base inside the box must not be blocked");
         // TC06: a ball of radius about 1.3 < √2 at (0, 0, 5): the section's corners poke out: false
         assertFalse(crosses(frustum, InnerBallTest.cubeBall(middle, 1.3), boxAround(middle, 1.3)),
                 "TC06: a section poking out of the ball must not be blocked");

@@ -70,7 +70,8 @@ class TransmittanceWalkTest {
                 }
             }
         }
-        assertTrue(blocked > 1000 && open > 1000, "TC01: too few blocked (" + blocked + ") or open (" + open + ") rays");
+        assertTrue(blocked > 1000 && open > 1000, "TC01: too few blocked (" + blocked + ") or open (" + open
+                + ") rays");
 
         // ===== Boundary Values Tests =====
         // TC11: a sphere at distance 4..6 along the ray: distance 4 − 1e-9 gives 1, 4 gives 0 (the hit counts)

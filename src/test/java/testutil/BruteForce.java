@@ -124,7 +124,8 @@ public final class BruteForce {
         Point3D p0 = ray.getP0();
         if (actual.geometry != expected.geometry)
             assertEquals(p0.distance(expected.point), p0.distance(actual.point), TIE,
-                    message + ": another body hit (not a tie) for " + ray + ": expected " + expected + ", got " + actual);
+                    message + ": another body hit (not a tie) for " + ray + ": expected " + expected + ", got "
+                            + actual);
         assertPoint(expected.point, actual.point, message + " for " + ray);
     }
 

@@ -178,7 +178,8 @@ public final class TestBundles {
     public static double gathered(BoundingVolumeHierarchy bvh, Ray ray, double maxT, double minK, Query query) {
         Point3D p = ray.getP0();
         Vector d = ray.getDir();
-        return bvh.bundleRayTransmittance(query.setRay(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), maxT), minK);
+        return bvh.bundleRayTransmittance(query.setRay(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(),
+                maxT), minK);
     }
 
     /**
@@ -282,7 +283,8 @@ public final class TestBundles {
             return null;
         if (facet && side != 0) {
             frustum.setBackFace(side * n.getX(), side * n.getY(), side * n.getZ());
-            assertTrue(frustum.hasBackFace(), "the base of a bundle leaving on one side must lie ahead of its back face");
+            assertTrue(frustum.hasBackFace(),
+                    "the base of a bundle leaving on one side must lie ahead of its back face");
         } else if (facet)
             frustum.setOrigins(p.getX(), p.getY(), p.getZ(), n.getX(), n.getY(), n.getZ());
         return new int[] { side, bvh.gather(query) ? 1 : 0 };
@@ -466,5 +468,31 @@ public final class TestBundles {
                 segments[i] = raySegment(rnd, p, thickness);
             return new RandomBundle(p, thickness, segments);
         }
+    }
+
+    /**
+     * The transmittance of a ray given as numbers, through the tree (or the scan) alone.
+     *
+     * @param bvh   the hierarchy (or scan)
+     * @param query the scratch space
+     * @param ray   {ox, oy, oz, dx, dy, dz, distance}
+     * @param minK  the cut-off
+     * @return the transmittance
+     */
+    public static double rayTransmittance(BoundingVolumeHierarchy bvh, Query query, double[] ray, double minK) {
+        return bvh.transmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK);
+    }
+
+    /**
+     * The transmittance of a ray given as numbers, through the bodies the last gather kept.
+     *
+     * @param bvh   the hierarchy (or scan)
+     * @param query the scratch space, as the gather left it
+     * @param ray   {ox, oy, oz, dx, dy, dz, distance}
+     * @param minK  the cut-off
+     * @return the transmittance
+     */
+    public static double gatheredRay(BoundingVolumeHierarchy bvh, Query query, double[] ray, double minK) {
+        return bvh.bundleRayTransmittance(query.setRay(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]), minK);
     }
 }

@@ -325,7 +325,8 @@ public final class TestScenes {
             double sign = rnd.nextBoolean() ? 1 : -1;
             double zero = rnd.nextBoolean() ? 0.0 : -0.0;
             int axis = rnd.nextInt(3);
-            return new Ray(origin, new Vector(axis == 0 ? sign : zero, axis == 1 ? sign : zero, axis == 2 ? sign : zero));
+            return new Ray(origin,
+                    new Vector(axis == 0 ? sign : zero, axis == 1 ? sign : zero, axis == 2 ? sign : zero));
         }
         if (aim < 0.6) {
             Point3D target = pointIn(rnd, bodies.get(rnd.nextInt(bodies.size())));
