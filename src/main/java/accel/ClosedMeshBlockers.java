@@ -21,16 +21,18 @@ final class ClosedMeshBlockers {
 
     /**
      * The closed parts that have an inner ball, the largest balls first: of the tree's meshes
-     * ({@link ClosedParts}), its course-style {@link Triangle} objects among them ({@link PackedTriangles}). Per
-     * part: its mesh (whose material says whether it is opaque), or null for triangles, then the
-     * triangles; its ball and its box.
+     * ({@link ClosedParts}), its course-style {@link Triangle} objects among them ({@link PackedTriangles}).
      */
-    private final TriangleMesh[] meshes;
-    private final Triangle[][] triangles;
-    private final InnerBall[] balls;
-    private final double[] boxes;
-    /** Per part of triangles: whether all of them were opaque when {@link #readMaterials} last looked. */
+    private final Blocker[] blockers;
+    /** Per blocker of triangles: whether all of them were opaque when {@link #readMaterials} last looked. */
     private final boolean[] opaque;
+
+    /**
+     * A closed part: its mesh (whose material says whether it is opaque), or null for packed
+     * triangles, then the triangles; its ball and its box.
+     */
+    private record Blocker(TriangleMesh mesh, Triangle[] triangles, InnerBall ball, double[] box) {
+    }
 
     /**
      * Finds the blockers among the tree's geometries.
@@ -45,30 +47,16 @@ final class ClosedMeshBlockers {
         Parallel.forEach(all.length, threads, BvhBuilder.BUILD_THREADS, m -> ClosedParts.of(all[m]));
         List<Blocker> found = new ArrayList<>();
         for (TriangleMesh mesh : all)
-            for (ClosedParts.Part part : ClosedParts.of(mesh))
-                found.add(packed != null && packed.isMesh(mesh)
-                        ? new Blocker(null, Arrays.stream(part.triangles()).mapToObj(t -> packed.triangles[t])
-                                .toArray(Triangle[]::new), part)
-                        : new Blocker(mesh, null, part));
-        found.sort(Comparator.comparingDouble((Blocker blocker) -> blocker.part.ball().radius).reversed());
-        int count = Math.min(found.size(), MAX_BLOCKERS);
-        this.meshes = new TriangleMesh[count];
-        this.triangles = new Triangle[count][];
-        this.balls = new InnerBall[count];
-        this.boxes = new double[6 * count];
-        this.opaque = new boolean[count];
-        for (int s = 0; s < count; ++s) {
-            Blocker blocker = found.get(s);
-            meshes[s] = blocker.mesh;
-            triangles[s] = blocker.triangles;
-            balls[s] = blocker.part.ball();
-            System.arraycopy(blocker.part.box(), 0, boxes, 6 * s, 6);
-        }
+            for (ClosedParts.Part part : ClosedParts.of(mesh)) {
+                boolean isPacked = packed != null && packed.isMesh(mesh);
+                Triangle[] triangles = isPacked ? Arrays.stream(part.triangles()).mapToObj(t -> packed.triangles[t])
+                        .toArray(Triangle[]::new) : null;
+                found.add(new Blocker(isPacked ? null : mesh, triangles, part.ball(), part.box()));
+            }
+        this.blockers = found.stream().sorted(Comparator.comparingDouble((Blocker blocker) -> blocker.ball.radius)
+                .reversed()).limit(MAX_BLOCKERS).toArray(Blocker[]::new);
+        this.opaque = new boolean[blockers.length];
         readMaterials();
-    }
-
-    /** A closed part of a mesh, or of the packed course-style triangles, while the largest are chosen. */
-    private record Blocker(TriangleMesh mesh, Triangle[] triangles, ClosedParts.Part part) {
     }
 
     /**
@@ -76,14 +64,15 @@ final class ClosedMeshBlockers {
      * 0 (a mesh's part reads its one material at every gather).
      */
     void readMaterials() {
-        for (int s = 0; s < opaque.length; ++s)
-            opaque[s] = triangles[s] != null
-                    && Arrays.stream(triangles[s]).allMatch(triangle -> triangle.getMaterial().getKt() == 0);
+        for (int s = 0; s < blockers.length; ++s)
+            opaque[s] = blockers[s].triangles != null
+                    && Arrays.stream(blockers[s].triangles).allMatch(triangle -> triangle.getMaterial().getKt() == 0);
     }
 
-    /** {@return whether part s of the blockers is opaque} */
+    /** {@return whether blocker s is opaque} */
     private boolean isOpaque(int s) {
-        return meshes[s] != null ? meshes[s].getMaterial().getKt() == 0 : opaque[s];
+        TriangleMesh mesh = blockers[s].mesh;
+        return mesh != null ? mesh.getMaterial().getKt() == 0 : opaque[s];
     }
 
     /**
@@ -98,15 +87,16 @@ final class ClosedMeshBlockers {
         query.blockersTried = true;
         ShadowFrustum frustum = query.frustum;
         int count = 0;
-        for (int s = 0; s < meshes.length; ++s) {
-            InnerBall ball = balls[s];
+        for (int s = 0; s < blockers.length; ++s) {
+            InnerBall ball = blockers[s].ball;
+            double[] box = blockers[s].box;
             if (!isOpaque(s) || !frustum.meetsBox(ball.box(), 0))
                 continue;
-            if (frustum.crossesClosedMesh(ball, boxes, 6 * s)) {
+            if (frustum.crossesClosedMesh(ball, box, 0)) {
                 query.blocked = true;
                 return true;
             }
-            if (frustum.baseOutside(boxes, 6 * s))
+            if (frustum.baseOutside(box, 0))
                 query.blockerList[count++] = s;
         }
         query.blockerCount = count;
@@ -125,7 +115,7 @@ final class ClosedMeshBlockers {
         int size = query.packet.size;
         int blocked = 0;
         for (int k = 0; k < query.blockerCount; ++k) {
-            InnerBall ball = balls[query.blockerList[k]];
+            InnerBall ball = blockers[query.blockerList[k]].ball;
             for (int r = 0; r < size; ++r) {
                 RayState ray = rays[r];
                 if (ray.ktr > 0 && ball.crossedBy(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT)) {

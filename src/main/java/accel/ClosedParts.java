@@ -65,7 +65,7 @@ final class ClosedParts {
         List<Part> parts = new ArrayList<>();
         for (int[] triangles : closedParts(welded, indices, partOf)) {
             TriangleMesh part = subMesh(mesh, welded, triangles);
-            InnerBall ball = InnerBall.of(part);
+            InnerBall ball = InnerBall.ofClosed(part);
             if (ball != null) {
                 double[] box = new double[6];
                 part.bounds(box, 0);
@@ -96,7 +96,7 @@ final class ClosedParts {
         int mask = table.length - 1;
         int[] welded = new int[count];
         for (int v = 0; v < count; ++v) {
-            int slot = (int) InnerBall.mix(bits[3 * v] ^ 31 * (bits[3 * v + 1] ^ 31 * bits[3 * v + 2])) & mask;
+            int slot = (int) mix(bits[3 * v] ^ 31 * (bits[3 * v + 1] ^ 31 * bits[3 * v + 2])) & mask;
             while (table[slot] >= 0 && !sameBits(bits, table[slot], v))
                 slot = slot + 1 & mask;
             if (table[slot] < 0)
@@ -149,8 +149,7 @@ final class ClosedParts {
     }
 
     /**
-     * The closed parts of a mesh: an exclusive or of each part's mixed edge keys sets most open parts
-     * aside in one pass; the others have their edges sorted and counted.
+     * The closed parts of a mesh.
      *
      * @param welded  per vertex, its welded vertex
      * @param indices the triangles' vertex indices
@@ -158,17 +157,13 @@ final class ClosedParts {
      * @return the triangles of each closed part of {@value #MIN_TRIANGLES} or more, in order
      */
     private static List<int[]> closedParts(int[] welded, int[] indices, int[] partOf) {
-        long[] mixed = new long[welded.length];
         int[] sizes = new int[welded.length];
-        for (int t = 0; t < partOf.length; ++t) {
-            ++sizes[partOf[t]];
-            for (int k = 0; k < 3; ++k)
-                mixed[partOf[t]] ^= InnerBall.mix(edgeKey(welded, indices, 3 * t + k));
-        }
-        // the triangles grouped by part (a counting sort), only for parts that passed the exclusive or
+        for (int part : partOf)
+            ++sizes[part];
+        // the triangles grouped by part (a counting sort), only for parts large enough
         int[] start = new int[welded.length + 1];
         for (int p = 0; p < welded.length; ++p)
-            start[p + 1] = start[p] + (sizes[p] >= MIN_TRIANGLES && mixed[p] == 0 ? sizes[p] : 0);
+            start[p + 1] = start[p] + (sizes[p] >= MIN_TRIANGLES ? sizes[p] : 0);
         int[] grouped = new int[start[welded.length]];
         int[] next = Arrays.copyOf(start, welded.length);
         for (int t = 0; t < partOf.length; ++t)
@@ -184,12 +179,27 @@ final class ClosedParts {
         return closed;
     }
 
-    /** {@return whether every edge of some triangles, by welded vertex, is used an even number of times} */
-    private static boolean isClosed(int[] welded, int[] indices, int[] triangles) {
+    /**
+     * Whether some triangles are closed: every edge, by vertex, used an even number of times. An
+     * exclusive or of the edges' mixed keys sets most open sets aside in one pass (an edge used an even
+     * number of times cancels out); only sets that pass it have their edges sorted and counted.
+     *
+     * @param vertexOf  per vertex index, the vertex it stands for (itself, or its welded vertex)
+     * @param indices   the triangles' vertex indices, three per triangle
+     * @param triangles the triangles
+     * @return true when every edge is used an even number of times
+     */
+    static boolean isClosed(int[] vertexOf, int[] indices, int[] triangles) {
+        long mixed = 0;
+        for (int t : triangles)
+            for (int k = 0; k < 3; ++k)
+                mixed ^= mix(edgeKey(vertexOf, indices, 3 * t + k));
+        if (mixed != 0)
+            return false;
         long[] edges = new long[3 * triangles.length];
         for (int i = 0; i < triangles.length; ++i)
             for (int k = 0; k < 3; ++k)
-                edges[3 * i + k] = edgeKey(welded, indices, 3 * triangles[i] + k);
+                edges[3 * i + k] = edgeKey(vertexOf, indices, 3 * triangles[i] + k);
         Arrays.sort(edges);
         for (int i = 0; i < edges.length; i += 2)
             if (edges[i] != edges[i + 1])
@@ -197,10 +207,18 @@ final class ClosedParts {
         return true;
     }
 
-    /** {@return the key of the edge from corner i to the next corner of its triangle, by welded vertex, either way round} */
-    private static long edgeKey(int[] welded, int[] indices, int i) {
-        int a = welded[indices[i]];
-        int b = welded[indices[i % 3 == 2 ? i - 2 : i + 1]];
+    /** {@return a key's bits well mixed (SplitMix64's finaliser), so different keys rarely cancel} */
+    static long mix(long key) {
+        long z = key + 0x9E3779B97F4A7C15L;
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
+    }
+
+    /** {@return the key of the edge from corner i to the next corner of its triangle, by vertex, either way round} */
+    private static long edgeKey(int[] vertexOf, int[] indices, int i) {
+        int a = vertexOf[indices[i]];
+        int b = vertexOf[indices[i % 3 == 2 ? i - 2 : i + 1]];
         return (long) Math.min(a, b) << 32 | Math.max(a, b);
     }
 

@@ -3,9 +3,9 @@ package accel;
 import geometries.TriangleMesh;
 import geometries.Triangle;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
+import java.util.stream.IntStream;
 
 /**
  * A ball inside a closed triangle mesh, which touches none of its triangles. Every edge of a closed
@@ -93,8 +93,16 @@ public final class InnerBall {
      * @return the ball, or null when the mesh is not closed or neither centre is surely inside it
      */
     public static InnerBall of(TriangleMesh mesh) {
-        if (!isClosed(mesh))
-            return null;
+        return isClosed(mesh) ? ofClosed(mesh) : null;
+    }
+
+    /**
+     * Finds the inner ball of a mesh known to be closed (see {@link ClosedParts}).
+     *
+     * @param mesh the mesh, closed
+     * @return the ball, or null when neither centre is surely inside it
+     */
+    static InnerBall ofClosed(TriangleMesh mesh) {
         double[] data = new double[TriangleMesh.TRIANGLE_DATA];
         double scale = largestCoordinate(mesh);
         List<InnerBall> balls = new ArrayList<>();
@@ -112,49 +120,16 @@ public final class InnerBall {
     }
 
     /**
-     * Whether a mesh is closed: every edge shared by an even number of triangles. An exclusive or of
-     * the edges' hashes sets most open meshes aside in one pass (an edge used an even number of times
-     * cancels out); only meshes that pass it have their edges sorted and counted.
+     * Whether a mesh is closed by vertex index: every edge shared by an even number of triangles
+     * ({@link ClosedParts#isClosed(int[], int[], int[])}, each vertex standing for itself).
      *
      * @param mesh the mesh
      * @return true when every edge is used an even number of times
      */
     static boolean isClosed(TriangleMesh mesh) {
-        int[] indices = mesh.indices();
-        long mixed = 0;
-        for (int i = 0; i < indices.length; ++i)
-            mixed ^= mix(edgeKey(indices, i));
-        if (mixed != 0)
-            return false;
-        long[] edges = new long[indices.length];
-        for (int i = 0; i < indices.length; ++i)
-            edges[i] = edgeKey(indices, i);
-        Arrays.sort(edges);
-        for (int i = 0; i < edges.length; i += 2)
-            if (edges[i] != edges[i + 1])
-                return false;
-        return true;
-    }
-
-    /**
-     * The key of an edge, the same either way round.
-     *
-     * @param indices the triangles' vertex indices, three per triangle
-     * @param i       a corner: the edge goes from it to the next corner of its triangle
-     * @return the key
-     */
-    private static long edgeKey(int[] indices, int i) {
-        int a = indices[i];
-        int b = indices[i % 3 == 2 ? i - 2 : i + 1];
-        return (long) Math.min(a, b) << 32 | Math.max(a, b);
-    }
-
-    /** {@return a key's bits well mixed (SplitMix64's finaliser), so different edges rarely cancel} */
-    static long mix(long key) {
-        long z = key + 0x9E3779B97F4A7C15L;
-        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
-        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
-        return z ^ (z >>> 31);
+        int[] own = IntStream.range(0, mesh.getVerticesCount()).toArray();
+        int[] all = IntStream.range(0, mesh.getTrianglesCount()).toArray();
+        return ClosedParts.isClosed(own, mesh.indices(), all);
     }
 
     /**

@@ -98,7 +98,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxT the largest distance that counts
      * @return true when t lies in (0, maxT]
      */
-    public static boolean within(double t, double maxT) {
+    static boolean within(double t, double maxT) {
         return t > 0 && t <= maxT;
     }
 
@@ -109,7 +109,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxT the largest distance that counts
      * @return t when it lies in (0, maxT], else {@link #NO_HIT}
      */
-    public static double hitWithin(double t, double maxT) {
+    static double hitWithin(double t, double maxT) {
         return within(t, maxT) ? t : NO_HIT;
     }
 
@@ -173,7 +173,7 @@ public abstract class Geometry extends Intersectable {
      * @param maxT the largest distance that counts
      * @return the number of intersections at distances in (0, maxT]
      */
-    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz)), maxT);
         return hits == null ? 0 : hits.size();
     }

@@ -213,7 +213,7 @@ public class Polygon extends Geometry {
     }
 
     @Override
-    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 1 : 0;
     }
 

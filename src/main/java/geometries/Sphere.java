@@ -83,7 +83,7 @@ public class Sphere extends Geometry {
     }
 
     @Override
-    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         return (within(root(ox, oy, oz, dx, dy, dz, -1), maxT) ? 1 : 0)
                 + (within(root(ox, oy, oz, dx, dy, dz, 1), maxT) ? 1 : 0);
     }

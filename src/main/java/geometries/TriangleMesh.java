@@ -353,7 +353,7 @@ public final class TriangleMesh extends Geometry {
     }
 
     @Override
-    public int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
         int count = 0;
         for (int t = 0; t < getTrianglesCount(); ++t)
             if (triangleHit(t, ox, oy, oz, dx, dy, dz, maxT) < NO_HIT)
