@@ -49,6 +49,16 @@ public class PointLight extends Light implements AreaLightSource {
     }
 
     /**
+     * The course's spelling of {@link #setKc(double)}, the same setter.
+     *
+     * @param kC the constant attenuation factor, 0 or more
+     * @return this light
+     */
+    public PointLight setkC(double kC) {
+        return setKc(kC);
+    }
+
+    /**
      * Sets the linear attenuation factor.
      *
      * @param kL the factor, 0 or more
@@ -62,6 +72,16 @@ public class PointLight extends Light implements AreaLightSource {
     }
 
     /**
+     * The course's spelling of {@link #setKl(double)}, the same setter.
+     *
+     * @param kL the linear attenuation factor, 0 or more
+     * @return this light
+     */
+    public PointLight setkL(double kL) {
+        return setKl(kL);
+    }
+
+    /**
      * Sets the quadratic attenuation factor.
      *
      * @param kQ the factor, 0 or more
@@ -72,6 +92,16 @@ public class PointLight extends Light implements AreaLightSource {
     public PointLight setKq(double kQ) {
         this.kQ = requireAttenuated(requireNonNegative(kQ, "light kQ"), kC, kL);
         return this;
+    }
+
+    /**
+     * The course's spelling of {@link #setKq(double)}, the same setter.
+     *
+     * @param kQ the quadratic attenuation factor, 0 or more
+     * @return this light
+     */
+    public PointLight setkQ(double kQ) {
+        return setKq(kQ);
     }
 
     /**

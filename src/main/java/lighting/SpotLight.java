@@ -62,6 +62,21 @@ public class SpotLight extends PointLight {
     }
 
     @Override
+    public SpotLight setkC(double kC) {
+        return setKc(kC);
+    }
+
+    @Override
+    public SpotLight setkL(double kL) {
+        return setKl(kL);
+    }
+
+    @Override
+    public SpotLight setkQ(double kQ) {
+        return setKq(kQ);
+    }
+
+    @Override
     public SpotLight setEdgesSize(double edges) {
         super.setEdgesSize(edges);
         return this;

@@ -37,6 +37,16 @@ public class Material {
     }
 
     /**
+     * The course's spelling of {@link #setKd(double)}, the same setter.
+     *
+     * @param kD diffuse attenuation, 0 or more
+     * @return this material
+     */
+    public Material setkD(double kD) {
+        return setKd(kD);
+    }
+
+    /**
      * Sets the specular factor.
      *
      * @param kS specular attenuation, 0 or more
@@ -45,6 +55,16 @@ public class Material {
     public Material setKs(double kS) {
         this.kS = requireNonNegative(kS, "material kS");
         return this;
+    }
+
+    /**
+     * The course's spelling of {@link #setKs(double)}, the same setter.
+     *
+     * @param kS specular attenuation, 0 or more
+     * @return this material
+     */
+    public Material setkS(double kS) {
+        return setKs(kS);
     }
 
     /**
@@ -59,6 +79,16 @@ public class Material {
     }
 
     /**
+     * The course's spelling of {@link #setKt(double)}, the same setter.
+     *
+     * @param kT transparency, in [0, 1]
+     * @return this material
+     */
+    public Material setkT(double kT) {
+        return setKt(kT);
+    }
+
+    /**
      * Sets the reflection factor.
      *
      * @param kR reflection, in [0, 1]
@@ -67,6 +97,16 @@ public class Material {
     public Material setKr(double kR) {
         this.kR = requireFraction(kR, "material kR");
         return this;
+    }
+
+    /**
+     * The course's spelling of {@link #setKr(double)}, the same setter.
+     *
+     * @param kR reflection, in [0, 1]
+     * @return this material
+     */
+    public Material setkR(double kR) {
+        return setKr(kR);
     }
 
     /**
@@ -83,6 +123,16 @@ public class Material {
     }
 
     /**
+     * The course's spelling of {@link #setShininess(int)}, the same setter.
+     *
+     * @param nShininess the exponent, 0 or more
+     * @return this material
+     */
+    public Material setnShininess(int nShininess) {
+        return setShininess(nShininess);
+    }
+
+    /**
      * Sets the glossiness: how far reflected rays spread around the mirror direction (see the class
      * comment for the geometry).
      *
@@ -95,6 +145,16 @@ public class Material {
     }
 
     /**
+     * The course's spelling of {@link #setKg(double)}, the same setter.
+     *
+     * @param kG the glossiness, in [0, 1]
+     * @return this material
+     */
+    public Material setkG(double kG) {
+        return setKg(kG);
+    }
+
+    /**
      * Sets the blurriness: how far refracted rays spread around the straight-through direction (see
      * the class comment for the geometry).
      *
@@ -104,6 +164,16 @@ public class Material {
     public Material setKb(double kB) {
         this.kB = requireFraction(kB, "material kB (blurriness)");
         return this;
+    }
+
+    /**
+     * The course's spelling of {@link #setKb(double)}, the same setter.
+     *
+     * @param kB the blurriness, in [0, 1]
+     * @return this material
+     */
+    public Material setkB(double kB) {
+        return setKb(kB);
     }
 
     /** {@return the diffuse factor} */

@@ -3,6 +3,7 @@ package lighting;
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertColor;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSameRejection;
 import static testutil.TestAssertions.assertSquareAxes;
 
 import org.junit.jupiter.api.Test;
@@ -217,6 +218,39 @@ class PointLightTest {
         // ===== Boundary Values Tests =====
         // TC10: kQ 0 is accepted
         assertEquals(0, light.setKq(0).getKq(), 0, "TC10: kQ 0 must be accepted");
+    }
+
+    /**
+     * Test method for {@link lighting.PointLight#setkC(double)}, {@link lighting.PointLight#setkL(double)} and
+     * {@link lighting.PointLight#setkQ(double)}, the course's names of the report's setters.
+     */
+    @Test
+    void testCourseSetterNames() {
+        PointLight light = new PointLight(I, POSITION);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: each returns the light itself and sets its factor: kC 2, kL 4E-4, kQ 2E-5
+        assertSame(light, light.setkC(2).setkL(4E-4).setkQ(2E-5), "TC01: the setters must return this");
+        assertArrayEquals(new double[] { 2, 4E-4, 2E-5 }, new double[] { light.getKc(), light.getKl(), light.getKq() },
+                0, "TC01: wrong kC, kL or kQ");
+        // TC02: kC 1, kL 0.5, kQ 0.25 through the course's names at d 2: 1 + 1 + 1 = 3 -> (100, 50, 20)
+        assertColor(100, 50, 20, new PointLight(I, POSITION).setkC(1).setkL(0.5).setkQ(0.25)
+                .getIntensity(new Point3D(1, 2, 5)), "TC02: wrong intensity at d 2");
+        // TC03: negative and NaN factors get the messages of the report's setters
+        assertSameRejection(() -> new PointLight(I, POSITION).setKc(-1), () -> new PointLight(I, POSITION).setkC(-1),
+                "TC03");
+        assertSameRejection(() -> new PointLight(I, POSITION).setKl(Double.NaN),
+                () -> new PointLight(I, POSITION).setkL(Double.NaN), "TC03");
+        assertSameRejection(() -> new PointLight(I, POSITION).setKq(-2), () -> new PointLight(I, POSITION).setkQ(-2),
+                "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC10: kC 0 is accepted once kL is 1 (0), and kL, kQ 0 are accepted (0)
+        PointLight linear = new PointLight(I, POSITION).setkL(1).setkC(0);
+        assertEquals(0, linear.getKc(), 0, "TC10: kC 0 must be accepted");
+        assertEquals(0, new PointLight(I, POSITION).setkL(0).setkQ(0).getKq(), 0, "TC10: kQ 0 must be accepted");
+        // TC11: all three factors 0 gets the message of setKc (infinitely bright light)
+        assertSameRejection(() -> new PointLight(I, POSITION).setKc(0), () -> new PointLight(I, POSITION).setkC(0),
+                "TC11");
     }
 
     /** Asserts that a vector is not null and of unit length. */

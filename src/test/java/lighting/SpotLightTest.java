@@ -3,6 +3,7 @@ package lighting;
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertColor;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSameRejection;
 import static testutil.TestAssertions.assertSquareAxes;
 
 import org.junit.jupiter.api.Test;
@@ -185,6 +186,35 @@ class SpotLightTest {
         // TC10: factors 0 are accepted (kC 0 with kL 1: on the axis at d 10 -> I / 10 = (20, 10, 4))
         assertColor(20, 10, 4, light().setKl(1).setKc(0).setKq(0).getIntensity(ON_AXIS),
                 "TC10: wrong intensity with kC 0, kL 1");
+    }
+
+    /**
+     * Test method for the chainable {@link lighting.SpotLight#setkC(double)}, {@link lighting.SpotLight#setkL(double)}
+     * and {@link lighting.SpotLight#setkQ(double)}, the course's names of the report's setters.
+     */
+    @Test
+    void testCourseSetterNames() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: each returns the SpotLight itself, chainable with setNarrowBeam: kC 0.5, kL 4E-4, kQ 2E-5
+        SpotLight spot = light();
+        SpotLight chained = spot.setkC(0.5).setkL(4E-4).setNarrowBeam(2).setkQ(2E-5);
+        assertSame(spot, chained, "TC01: the setters must return this");
+        assertArrayEquals(new double[] { 0.5, 4E-4, 2E-5 }, new double[] { spot.getKc(), spot.getKl(), spot.getKq() },
+                0, "TC01: wrong kC, kL or kQ");
+        // TC02: kC 0.5, kL 0.1, kQ 0.01, beam 2, 60° at d 10: 0.25 / 2.5 -> (20, 10, 4)
+        assertColor(20, 10, 4, light().setkC(0.5).setkL(0.1).setkQ(0.01).setNarrowBeam(2)
+                .getIntensity(new Point3D(0, 5 * SQRT3, -5)), "TC02: wrong combined intensity");
+        // TC03: negative and NaN factors get the messages of the report's setters
+        assertSameRejection(() -> light().setKc(-1), () -> light().setkC(-1), "TC03");
+        assertSameRejection(() -> light().setKl(Double.NaN), () -> light().setkL(Double.NaN), "TC03");
+        assertSameRejection(() -> light().setKq(-1e-3), () -> light().setkQ(-1e-3), "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC10: kC 0 with kL 1: on the axis at d 10 -> I / 10 = (20, 10, 4)
+        assertColor(20, 10, 4, light().setkL(1).setkC(0).setkQ(0).getIntensity(ON_AXIS),
+                "TC10: wrong intensity with kC 0, kL 1");
+        // TC11: all three factors 0 gets the message of setKc
+        assertSameRejection(() -> light().setKc(0), () -> light().setkC(0), "TC11");
     }
 
     /**

@@ -2,7 +2,9 @@ package primitives;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertSameRejection;
 
+import java.util.List;
 import java.util.function.BiFunction;
 import java.util.function.ToDoubleFunction;
 
@@ -200,6 +202,86 @@ class MaterialTest {
     @Test
     void testSetKb() {
         assertSpread("kB", Material::setKb, Material::getKb);
+    }
+
+    /**
+     * A factor's setter under the report's name and under the course's, and its getter.
+     *
+     * @param name     the factor's name
+     * @param report   the report's setter ({@code setKd})
+     * @param course   the course's setter ({@code setkD})
+     * @param getter   the factor's getter
+     * @param fraction whether the factor is at most 1
+     */
+    private record Twin(String name, BiFunction<Material, Double, Material> report,
+                        BiFunction<Material, Double, Material> course, ToDoubleFunction<Material> getter,
+                        boolean fraction) {
+    }
+
+    /** The factors the course sets through the lower-k names. */
+    private static final List<Twin> TWINS = List.of(
+            new Twin("kD", Material::setKd, Material::setkD, Material::getKd, false),
+            new Twin("kS", Material::setKs, Material::setkS, Material::getKs, false),
+            new Twin("kT", Material::setKt, Material::setkT, Material::getKt, true),
+            new Twin("kR", Material::setKr, Material::setkR, Material::getKr, true),
+            new Twin("kG", Material::setKg, Material::setkG, Material::getKg, true),
+            new Twin("kB", Material::setKb, Material::setkB, Material::getKb, true));
+
+    /**
+     * Test method for {@link primitives.Material#setkD(double)}, {@link primitives.Material#setkS(double)},
+     * {@link primitives.Material#setkT(double)}, {@link primitives.Material#setkR(double)},
+     * {@link primitives.Material#setkG(double)}, {@link primitives.Material#setkB(double)} and
+     * {@link primitives.Material#setnShininess(int)}, the course's names of the report's setters.
+     */
+    @Test
+    void testCourseSetterNames() {
+        // ===== Equivalence Partitions Tests =====
+        for (Twin twin : TWINS) {
+            String tc = " (" + twin.name() + ")";
+            Material m = new Material();
+            // TC01: the course's setter returns this material and sets the factor (0.25)
+            assertSame(m, twin.course().apply(m, 0.25), "TC01: the course's setter must return this" + tc);
+            assertEquals(0.25, twin.getter().applyAsDouble(m), 1e-15, "TC01: wrong factor" + tc);
+            // TC02: negative (-0.5) and NaN are rejected with the report's setter's message
+            assertSameRejection(() -> twin.report().apply(new Material(), -0.5),
+                    () -> twin.course().apply(new Material(), -0.5), "TC02" + tc);
+            assertSameRejection(() -> twin.report().apply(new Material(), Double.NaN),
+                    () -> twin.course().apply(new Material(), Double.NaN), "TC02" + tc);
+        }
+        // TC03: setnShininess returns this material and sets 20; -5 gets the message of setShininess
+        Material m = new Material();
+        assertSame(m, m.setnShininess(20), "TC03: setnShininess must return this");
+        assertEquals(20, m.getShininess(), "TC03: wrong shininess");
+        assertSameRejection(() -> new Material().setShininess(-5), () -> new Material().setnShininess(-5), "TC03");
+        // TC04: a chain of the course's names, as the course's tests write it, sets what the report's chain
+        // sets: kD .3, kS .4, shininess 20, kT .5, kR .6, kG .1, kB .2
+        Material course = new Material().setkD(0.3).setkS(0.4).setnShininess(20).setkT(0.5).setkR(0.6).setkG(0.1)
+                .setkB(0.2);
+        Material report = new Material().setKd(0.3).setKs(0.4).setShininess(20).setKt(0.5).setKr(0.6).setKg(0.1)
+                .setKb(0.2);
+        assertEquals(report.toString(), course.toString(), "TC04: the course's chain must set the same material");
+
+        // ===== Boundary Values Tests =====
+        for (Twin twin : TWINS) {
+            String tc = " (" + twin.name() + ")";
+            // TC10: 0 replaces 0.5 (0)
+            Material half = twin.report().apply(new Material(), 0.5);
+            assertEquals(0, twin.getter().applyAsDouble(twin.course().apply(half, 0.0)), 0,
+                    "TC10: 0 must be accepted" + tc);
+            // TC11: the negative value closest to 0 (-Double.MIN_VALUE) gets the report's setter's message
+            assertSameRejection(() -> twin.report().apply(new Material(), -Double.MIN_VALUE),
+                    () -> twin.course().apply(new Material(), -Double.MIN_VALUE), "TC11" + tc);
+            if (twin.fraction()) {
+                // TC12: a fraction's 1 is accepted (1), and just above 1 gets the report's setter's message
+                assertEquals(1, twin.getter().applyAsDouble(twin.course().apply(new Material(), 1.0)), 0,
+                        "TC12: 1 must be accepted" + tc);
+                assertSameRejection(() -> twin.report().apply(new Material(), Math.nextUp(1.0)),
+                        () -> twin.course().apply(new Material(), Math.nextUp(1.0)), "TC12" + tc);
+            }
+        }
+        // TC13: shininess 0 is accepted (0), and -1 gets the message of setShininess
+        assertEquals(0, new Material().setnShininess(5).setnShininess(0).getShininess(), "TC13: 0 must be accepted");
+        assertSameRejection(() -> new Material().setShininess(-1), () -> new Material().setnShininess(-1), "TC13");
     }
 
     /**
