@@ -6,6 +6,7 @@ import java.util.function.LongConsumer;
 
 import primitives.Color;
 import primitives.Parallel;
+import scene.Scene;
 
 import static primitives.Util.requireNonNull;
 
@@ -37,13 +38,18 @@ public class Render {
     private ImageWriter imageWriter;
     private Camera camera;
     private RayTracerBase rayTracer;
+    /** The {@link RayTracerBasic} over the scene set with {@link #setScene}, used when no ray tracer is set. */
+    private RayTracerBase sceneTracer;
     private int threadsCount = Runtime.getRuntime().availableProcessors();
     private boolean debugPrint;
     private JitteredGrid pixelGrid;
     private boolean adaptiveSuperSampling;
     private LongConsumer progressListener;
 
-    /** Creates a render with nothing set yet: set an image writer, a camera and a ray tracer before rendering. */
+    /**
+     * Creates a render with nothing set yet: set an image writer, a camera and a ray tracer (or a scene)
+     * before rendering.
+     */
     public Render() {
     }
 
@@ -75,7 +81,7 @@ public class Render {
     }
 
     /**
-     * Sets the ray tracer, which holds the scene.
+     * Sets the ray tracer, which holds the scene; it is used rather than a scene set with {@link #setScene}.
      *
      * @param rayTracer the ray tracer
      * @return this render
@@ -85,9 +91,27 @@ public class Render {
         return this;
     }
 
-    /** {@return the ray tracer (null until set)} */
+    /**
+     * Sets the scene, the course's early way to render: with no ray tracer set, {@link #renderImage()}
+     * traces the scene with a {@link RayTracerBasic} over it. A ray tracer set with {@link #setRayTracer}
+     * is used instead, whichever of the two was set first; setting both is not an error. The settings
+     * forwarded to the ray tracer ({@link #setSoftShadows} and the like) go to the one in use when they are made.
+     *
+     * @param scene the scene
+     * @return this render
+     * @throws IllegalArgumentException when the scene is null
+     */
+    public Render setScene(Scene scene) {
+        this.sceneTracer = new RayTracerBasic(scene);
+        return this;
+    }
+
+    /**
+     * {@return the ray tracer rendering uses: the one set with {@link #setRayTracer}, else the
+     * {@link RayTracerBasic} over the scene set with {@link #setScene} (null until either is set)}
+     */
     public RayTracerBase getRayTracer() {
-        return rayTracer;
+        return rayTracer != null ? rayTracer : sceneTracer;
     }
 
     /**
@@ -95,7 +119,7 @@ public class Render {
      *
      * @param softShadows true for soft shadows from lights with an area
      * @return this render
-     * @throws MissingResourceException when the ray tracer is not set yet
+     * @throws MissingResourceException when neither a ray tracer nor a scene is set yet
      * @see RayTracerBase#setSoftShadows(boolean)
      */
     public Render setSoftShadows(boolean softShadows) {
@@ -108,7 +132,7 @@ public class Render {
      *
      * @param sqrtBeamNum the number of cells along each side of a light's square, 1 to {@link JitteredGrid#MAX_SQRT_SAMPLES}
      * @return this render
-     * @throws MissingResourceException when the ray tracer is not set yet
+     * @throws MissingResourceException when neither a ray tracer nor a scene is set yet
      * @see RayTracerBase#setSqrtBeamNum(int)
      */
     public Render setSqrtBeamNum(int sqrtBeamNum) {
@@ -122,7 +146,7 @@ public class Render {
      * @param sqrtGlossRays the number of cells along each side of the square of spread rays, 1 to
      *                      {@link JitteredGrid#MAX_SQRT_SAMPLES}
      * @return this render
-     * @throws MissingResourceException when the ray tracer is not set yet
+     * @throws MissingResourceException when neither a ray tracer nor a scene is set yet
      * @see RayTracerBase#setSqrtGlossRays(int)
      */
     public Render setSqrtGlossRays(int sqrtGlossRays) {
@@ -135,7 +159,7 @@ public class Render {
      *
      * @param adaptiveSoftShadows true for adaptive sampling of lights' squares
      * @return this render
-     * @throws MissingResourceException when the ray tracer is not set yet
+     * @throws MissingResourceException when neither a ray tracer nor a scene is set yet
      * @see RayTracerBase#setAdaptiveSoftShadows(boolean)
      */
     public Render setAdaptiveSoftShadows(boolean adaptiveSoftShadows) {
@@ -148,7 +172,7 @@ public class Render {
      *
      * @param seed the seed
      * @return this render
-     * @throws MissingResourceException when the ray tracer is not set yet
+     * @throws MissingResourceException when neither a ray tracer nor a scene is set yet
      * @see RayTracerBase#setSeed(long)
      */
     public Render setSeed(long seed) {
@@ -246,13 +270,15 @@ public class Render {
      * Renders the picture into the image (call {@link #writeToImage()} to save it).
      *
      * @throws MissingResourceException naming the image writer, camera or ray tracer when it is not set
+     *                                  (a scene set with {@link #setScene} stands for the ray tracer)
      */
     public void renderImage() {
         requireImageWriter();
         if (camera == null)
             throw new MissingResourceException("Render: the camera is not set", Render.class.getName(), "camera");
-        requireRayTracer().prepare(threadsCount);
-        new TileRenderer().run();
+        RayTracerBase tracer = requireRayTracer();
+        tracer.prepare(threadsCount);
+        new TileRenderer(tracer).run();
     }
 
     /**
@@ -286,9 +312,11 @@ public class Render {
     }
 
     private RayTracerBase requireRayTracer() {
-        if (rayTracer == null)
-            throw new MissingResourceException("Render: the ray tracer is not set", Render.class.getName(), "rayTracer");
-        return rayTracer;
+        RayTracerBase tracer = getRayTracer();
+        if (tracer == null)
+            throw new MissingResourceException("Render: the ray tracer is not set (set one with setRayTracer,"
+                    + " or a scene with setScene)", Render.class.getName(), "rayTracer");
+        return tracer;
     }
 
     private void requireImageWriter() {
@@ -298,12 +326,17 @@ public class Render {
 
     /** One rendering pass: threads take tiles from a shared counter until none is left. */
     private final class TileRenderer {
+        private final RayTracerBase tracer;
         private final int nX = imageWriter.getNx();
         private final int nY = imageWriter.getNy();
         private final int tilesX = (nX + TILE - 1) / TILE;
         private final int tilesCount = tilesX * ((nY + TILE - 1) / TILE);
         /** The pixels rendered so far: what the progress listener is told and the debug print shows. */
         private final AtomicLong pixelsDone = new AtomicLong();
+
+        TileRenderer(RayTracerBase tracer) {
+            this.tracer = tracer;
+        }
 
         void run() {
             Thread printer = debugPrint ? startProgressPrinter() : null;
@@ -353,7 +386,7 @@ public class Render {
 
         /** The colour of a pixel: seen through its centre, or the average of its jittered or adaptive samples. */
         private Color renderPixel(int j, int i) {
-            ThreadState state = rayTracer.startPixel(j, i);
+            ThreadState state = tracer.startPixel(j, i);
             if (pixelGrid == null)
                 return sample(state, j, i, 0.5, 0.5);
             if (adaptiveSuperSampling)
@@ -368,12 +401,12 @@ public class Render {
         private Color sample(ThreadState state, int j, int i, double dx, double dy) {
             if (!camera.hasAperture()) {
                 ++state.primaryRays;
-                return rayTracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i, dx, dy));
+                return tracer.traceRay(camera.constructRayThroughPixel(nX, nY, j, i, dx, dy));
             }
             JitteredGrid apertureGrid = camera.getApertureGrid();
             state.primaryRays += apertureGrid.getSamplesCount();
             return average(apertureGrid, state.aperturePoints(apertureGrid), state,
-                    (u, v) -> rayTracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v)));
+                    (u, v) -> tracer.traceRay(camera.constructRayThroughAperture(nX, nY, j, i, dx, dy, u, v)));
         }
 
         /**

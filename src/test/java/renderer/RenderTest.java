@@ -2,6 +2,7 @@ package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -10,10 +11,12 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.MissingResourceException;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.UnaryOperator;
 
 import org.junit.jupiter.api.Test;
 
@@ -76,8 +79,20 @@ class RenderTest {
      * @return the render, its picture done
      */
     private static Render render(String name, int size, RayTracerBase tracer, int k, int threads) {
-        Render render = new Render().setImageWriter(new ImageWriter(name, size, size, FOLDER))
-                .setCamera(topCamera()).setRayTracer(tracer).setMultithreading(threads).setAntiAliasing(k);
+        return render(name, size, render -> render.setRayTracer(tracer).setMultithreading(threads).setAntiAliasing(k));
+    }
+
+    /**
+     * Renders a square picture through the top camera, writing it under target/.
+     *
+     * @param name     the picture's name
+     * @param size     the picture's width and height in pixels
+     * @param settings sets the rest (the ray tracer or the scene, ...) on the render given
+     * @return the render, its picture done
+     */
+    private static Render render(String name, int size, UnaryOperator<Render> settings) {
+        Render render = settings.apply(new Render().setImageWriter(new ImageWriter(name, size, size, FOLDER))
+                .setCamera(topCamera()));
         render.renderImage();
         render.writeToImage();
         return render;
@@ -323,6 +338,53 @@ class RenderTest {
         // TC11: a grid interval of 0 is rejected
         assertThrows(IllegalArgumentException.class, () -> render.printGrid(0, Color.BLACK),
                 "TC11: a zero grid interval must be rejected");
+    }
+
+    /**
+     * Test method for {@link Render#setScene(Scene)}: the course's early render, with no ray tracer set,
+     * traces the scene with a {@link RayTracerBasic}; a ray tracer set explicitly wins.
+     */
+    @Test
+    void testSetScene() throws IOException {
+        Scene scene = floorScene("set scene");
+        scene.lights.add(new PointLight(new Color(300, 300, 300), new Point3D(0, 0, 100)));
+        Render viaScene = render("setScene", SIZE, render -> render.setScene(scene));
+        render("setSceneTracer", SIZE, render -> render.setRayTracer(new RayTracerBasic(scene)));
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the scene alone is rendered: the lit floor's centre is kD·I = 240 per channel
+        assertEquals(3 * 240, brightness(viaScene, 50, 50), 3, "TC01: the scene set must be rendered");
+        assertInstanceOf(RayTracerBasic.class, viaScene.getRayTracer(), "TC01: the scene's tracer is a RayTracerBasic");
+        // TC02: the picture is, byte for byte, that of an explicit RayTracerBasic over the same scene (-1: no mismatch)
+        assertEquals(-1L, Files.mismatch(FOLDER.resolve("setScene.png"), FOLDER.resolve("setSceneTracer.png")),
+                "TC02: setScene must render the picture of a RayTracerBasic over the scene");
+        // TC03: a ray tracer set explicitly wins, before or after the scene: its empty scene's background (200, 0, 0)
+        RayTracerBase explicit = new RayTracerBasic(new Scene("explicit").setBackground(new Color(200, 0, 0)));
+        Render after = render("setSceneThenTracer", SIZE, render -> render.setScene(scene).setRayTracer(explicit));
+        Render before = render("setTracerThenScene", SIZE, render -> render.setRayTracer(explicit).setScene(scene));
+        assertSame(explicit, after.getRayTracer(), "TC03: the explicit ray tracer set after the scene must win");
+        assertSame(explicit, before.getRayTracer(), "TC03: the explicit ray tracer set before the scene must win");
+        assertEquals(new java.awt.Color(200, 0, 0), pixel(after, 50, 50), "TC03: the explicit ray tracer's picture");
+        assertEquals(new java.awt.Color(200, 0, 0), pixel(before, 50, 50), "TC03: the explicit ray tracer's picture");
+        // TC04: the forwarding setters reach the scene's ray tracer: soft shadows on, sqrtBeamNum 3
+        RayTracerBase forwarded = new Render().setScene(scene).setSoftShadows(true).setSqrtBeamNum(3).getRayTracer();
+        assertTrue(forwarded.isSoftShadows(), "TC04: soft shadows must be on in the scene's ray tracer");
+        assertEquals(3, forwarded.getSqrtBeamNum(), "TC04: sqrtBeamNum must be 3 in the scene's ray tracer");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a null scene is rejected, the message names the "scene"
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new Render().setScene(null),
+                "TC11: a null scene must be rejected");
+        assertMessage(e, "scene", "TC11");
+        // TC12: neither a ray tracer nor a scene: rendering and the forwarding setters name setScene as a way out
+        Render untraced = new Render().setImageWriter(new ImageWriter("noTracer", SIZE, SIZE, FOLDER))
+                .setCamera(topCamera());
+        MissingResourceException m = assertThrows(MissingResourceException.class, untraced::renderImage,
+                "TC12: a render without a ray tracer or a scene must fail");
+        assertMessage(m, "setScene", "TC12");
+        m = assertThrows(MissingResourceException.class, () -> new Render().setSeed(1),
+                "TC12: setSeed without a ray tracer or a scene must fail");
+        assertMessage(m, "setScene", "TC12");
     }
 
     // ---------------------------------------------------------------------------------------------
