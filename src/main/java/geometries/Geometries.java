@@ -8,7 +8,9 @@ import accel.BoundingVolumeHierarchy;
 import primitives.Ray;
 
 /**
- * A composite of intersectable objects, itself intersectable: the scene's collection of bodies.
+ * A composite of intersectable objects, itself intersectable: the scene's collection of bodies. Its
+ * queries list the points body by body, in the order the bodies were added, each body's nearest first;
+ * they are not sorted across bodies (the renderer asks its hierarchy for the nearest hit instead).
  */
 public class Geometries extends Intersectable {
     private final List<Intersectable> items = new ArrayList<>();

@@ -72,7 +72,8 @@ public abstract class Intersectable {
      * Finds the points where a ray hits this object.
      *
      * @param ray the ray
-     * @return the points, nearest first for a single body, or null when the ray misses
+     * @return the points, nearest first for a single body (a {@link Geometries}' body by body), or null when
+     *         the ray misses
      */
     public List<Point3D> findIntersections(Ray ray) {
         List<GeoPoint> geoPoints = findGeoIntersections(ray);
@@ -83,7 +84,8 @@ public abstract class Intersectable {
      * Finds the points where a ray hits this object, with the geometry hit at each.
      *
      * @param ray the ray
-     * @return the intersections, or null when the ray misses
+     * @return the intersections, nearest first for a single body (a {@link Geometries}' body by body), or
+     *         null when the ray misses
      */
     public final List<GeoPoint> findGeoIntersections(Ray ray) {
         return findGeoIntersections(ray, Double.POSITIVE_INFINITY);
@@ -94,7 +96,8 @@ public abstract class Intersectable {
      *
      * @param ray         the ray
      * @param maxDistance the largest distance from the ray's start that counts (positive)
-     * @return the intersections, or null when there is none within the distance
+     * @return the intersections, nearest first for a single body (a {@link Geometries}' body by body), or
+     *         null when there is none within the distance
      */
     public final List<GeoPoint> findGeoIntersections(Ray ray, double maxDistance) {
         requireNonNull(ray, "ray");

@@ -2,7 +2,11 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertNearestFirst;
+import static testutil.TestAssertions.assertNearestFirstThrough;
 import static testutil.TestAssertions.assertSameRejection;
+import static testutil.TestRandom.rayThrough;
+import static testutil.TestScenes.pointIn;
 
 import java.util.List;
 
@@ -300,5 +304,40 @@ class CylinderTest {
         assertEquals(List.of(new GeoPoint(cylinder, new Point3D(-1, 0, 2))), cylinder.findGeoIntersections(across, 1),
                 "TC12: wrong intersection points");
         assertEquals(2, cylinder.findGeoIntersections(across, 3).size(), "TC12: wrong number of intersection points");
+    }
+
+    /**
+     * Test method for {@link geometries.Cylinder#findIntersections(primitives.Ray)} and
+     * {@link geometries.Intersectable#findGeoIntersections(primitives.Ray)}: the two points come by distance
+     * along the ray, nearest first, whichever of the side and the caps the ray meets first.
+     */
+    @Test
+    void testIntersectionsNearestFirst() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: in through the top cap, out through the side: (0.5, 0, 3) then (1, 0, 2.5); back, side first
+        assertNearestFirst(cylinder, new Ray(new Point3D(0, 0, 3.5), new Vector(1, 0, -1)),
+                List.of(new Point3D(0.5, 0, 3), new Point3D(1, 0, 2.5)), "TC01");
+        // TC02: in through the side, out through the bottom cap: (-1, 0, 2) then (0, 0, 1); back, cap first
+        assertNearestFirst(cylinder, new Ray(new Point3D(-2, 0, 3), new Vector(1, 0, -1)),
+                List.of(new Point3D(-1, 0, 2), new Point3D(0, 0, 1)), "TC02");
+        // TC03: through both side walls: (-1, 0, 2) then (1, 0, 2), and back
+        assertNearestFirst(cylinder, new Ray(new Point3D(-2, 0, 2), new Vector(1, 0, 0)),
+                List.of(new Point3D(-1, 0, 2), new Point3D(1, 0, 2)), "TC03");
+        // TC04: through both caps, slanted: (0.2, 0, 1) then (0.6, 0, 3), and back
+        assertNearestFirst(cylinder, new Ray(Point3D.ZERO, new Vector(0.2, 0, 1)),
+                List.of(new Point3D(0.2, 0, 1), new Point3D(0.6, 0, 3)), "TC04");
+        // TC05: 200 seeded random rays from 10 away through a point of the axis: 2 points each, nearest first
+        assertNearestFirstThrough(cylinder, rnd -> rayThrough(rnd, pointIn(rnd, cylinder), 10), "TC05");
+
+        // ===== Boundary Values Tests =====
+        // TC10: along the axis: the bottom cap (0, 0, 1) then the top cap (0, 0, 3), and back
+        assertNearestFirst(cylinder, new Ray(Point3D.ZERO, new Vector(0, 0, 1)),
+                List.of(new Point3D(0, 0, 1), new Point3D(0, 0, 3)), "TC10");
+        // TC11: through the top rim and the opposite bottom rim: (1, 0, 3) then (-1, 0, 1), and back
+        assertNearestFirst(cylinder, new Ray(new Point3D(2, 0, 4), new Vector(-1, 0, -1)),
+                List.of(new Point3D(1, 0, 3), new Point3D(-1, 0, 1)), "TC11");
+        // TC12: across the corner next to the top rim, the cap 0.01 before the side: (0.99, 0, 3) then (1, 0, 2.99)
+        assertNearestFirst(cylinder, new Ray(new Point3D(0.49, 0, 3.5), new Vector(1, 0, -1)),
+                List.of(new Point3D(0.99, 0, 3), new Point3D(1, 0, 2.99)), "TC12");
     }
 }

@@ -84,6 +84,24 @@ class GeometriesTest {
     }
 
     /**
+     * Test method for {@link geometries.Geometries#findIntersections(primitives.Ray)}: the points come body by
+     * body in the order the bodies were added, each body's nearest first, not sorted across bodies.
+     */
+    @Test
+    void testIntersectionsBodyByBody() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the plane added first, then the sphere nearer the ray's start: the plane's (0, 0, -5), then the
+        // sphere's (0, 0, 1) and (0, 0, -1), nearest first
+        assertEquals(List.of(new Point3D(0, 0, -5), new Point3D(0, 0, 1), new Point3D(0, 0, -1)),
+                new Geometries(plane, sphere).findIntersections(downFrom(10)), "TC01: wrong points or order");
+
+        // ===== Boundary Values Tests =====
+        // TC10: a single sphere in a composite: its two points nearest first, (0, 0, 1) then (0, 0, -1)
+        assertEquals(List.of(new Point3D(0, 0, 1), new Point3D(0, 0, -1)),
+                new Geometries(sphere).findIntersections(downFrom(10)), "TC10: wrong points or order");
+    }
+
+    /**
      * Test method for {@link geometries.Intersectable#findGeoIntersections(primitives.Ray)} on a composite:
      * each point names the shape it lies on, also through a nested composite.
      */

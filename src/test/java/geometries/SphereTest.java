@@ -6,7 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertNearestFirst;
+import static testutil.TestAssertions.assertNearestFirstThrough;
 import static testutil.TestAssertions.assertSameRejection;
+import static testutil.TestRandom.rayThrough;
+import static testutil.TestScenes.pointIn;
 
 import java.util.List;
 
@@ -251,5 +255,30 @@ class SphereTest {
         // TC12: max distance exactly at the farther point includes both (2 points)
         assertEquals(2, sphere.findGeoIntersections(ray, 3).size(),
                 "TC12: a point exactly at the max distance must be included");
+    }
+
+    /**
+     * Test method for {@link geometries.Sphere#findIntersections(primitives.Ray)} and
+     * {@link geometries.Intersectable#findGeoIntersections(primitives.Ray)}: the two points come by distance
+     * along the ray, nearest first, whichever way the ray crosses.
+     */
+    @Test
+    void testIntersectionsNearestFirst() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: along −x off the centre from (3, 0.5, 0): (1 + √0.75, 0.5, 0) then (1 − √0.75, 0.5, 0), and back
+        double half = Math.sqrt(0.75);
+        assertNearestFirst(sphere, new Ray(new Point3D(3, 0.5, 0), new Vector(-1, 0, 0)),
+                List.of(new Point3D(1 + half, 0.5, 0), new Point3D(1 - half, 0.5, 0)), "TC01");
+        // TC02: 200 seeded random rays from 10 away through a point inside: 2 points each, nearest first
+        assertNearestFirstThrough(sphere, rnd -> rayThrough(rnd, pointIn(rnd, sphere), 10), "TC02");
+
+        // ===== Boundary Values Tests =====
+        // TC10: through the centre along +z from (1, 0, −2): (1, 0, −1) then (1, 0, 1), and back
+        assertNearestFirst(sphere, new Ray(new Point3D(1, 0, -2), new Vector(0, 0, 1)),
+                List.of(new Point3D(1, 0, -1), new Point3D(1, 0, 1)), "TC10");
+        // TC11: a chord just inside the tangent: (1 ± √(1 − 0.9999²), 0.9999, 0), about 0.028 apart, and back
+        double graze = Math.sqrt(1 - 0.9999 * 0.9999);
+        assertNearestFirst(sphere, new Ray(new Point3D(3, 0.9999, 0), new Vector(-1, 0, 0)),
+                List.of(new Point3D(1 + graze, 0.9999, 0), new Point3D(1 - graze, 0.9999, 0)), "TC11");
     }
 }

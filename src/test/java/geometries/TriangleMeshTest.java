@@ -13,7 +13,10 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertNearestFirst;
+import static testutil.TestAssertions.assertNearestFirstThrough;
 import static testutil.TestRandom.randomPoint;
+import static testutil.TestRandom.rayThrough;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -524,5 +527,32 @@ class TriangleMeshTest {
         indices[5] = 1;
         assertEquals(3, mesh.getVertexIndex(1, 2), "TC11: the mesh must not change with the copy");
         assertEquals(3, mesh.indices()[5], "TC11: a new call gives the mesh's own indices again");
+    }
+
+    /**
+     * Test method for {@link TriangleMesh#findIntersections(Ray)} and {@link TriangleMesh#findGeoIntersections(Ray)}:
+     * the points where a ray crosses a closed mesh come by distance along the ray, nearest first, whichever
+     * triangles it meets first.
+     */
+    @Test
+    void testIntersectionsNearestFirst() {
+        // a cube of 12 triangles from (0, 0, 0) to (2, 2, 2); its faces' diagonals are y = x, y = z and x = z
+        TriangleMesh cube = TestMeshes.cube(0, 0, 0, 2);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: down through the top and the bottom: (0.5, 1.5, 2) then (0.5, 1.5, 0), and back
+        assertNearestFirst(cube, new Ray(new Point3D(0.5, 1.5, 5), new Vector(0, 0, -1)),
+                List.of(new Point3D(0.5, 1.5, 2), new Point3D(0.5, 1.5, 0)), "TC01");
+        // TC02: in through the top, out through the side x = 2: (1.5, 0.7, 2) then (2, 0.7, 1.5), and back
+        assertNearestFirst(cube, new Ray(new Point3D(0.5, 0.7, 3), new Vector(1, 0, -1)),
+                List.of(new Point3D(1.5, 0.7, 2), new Point3D(2, 0.7, 1.5)), "TC02");
+        // TC03: 200 seeded random rays from 10 away through a point inside: 2 points each, nearest first
+        assertNearestFirstThrough(cube, rnd -> rayThrough(rnd, randomPoint(rnd, new Point3D(1, 1, 1), 0.9), 10),
+                "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC10: across the corner next to the top's edge x = 2, the points 0.01 apart: (1.99, 0.7, 2) then
+        // (2, 0.7, 1.99), and back
+        assertNearestFirst(cube, new Ray(new Point3D(1.49, 0.7, 2.5), new Vector(1, 0, -1)),
+                List.of(new Point3D(1.99, 0.7, 2), new Point3D(2, 0.7, 1.99)), "TC10");
     }
 }

@@ -2,7 +2,10 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertNearestFirst;
+import static testutil.TestAssertions.assertNearestFirstThrough;
 import static testutil.TestAssertions.assertSameRejection;
+import static testutil.TestScenes.perpendicular;
 
 import java.util.List;
 
@@ -254,5 +257,33 @@ class TubeTest {
         assertMessage(e, "distance", "TC12");
         assertThrows(IllegalArgumentException.class, () -> tube.findGeoIntersections(ray, Double.NaN),
                 "TC12: NaN distance accepted");
+    }
+
+    /**
+     * Test method for {@link geometries.Tube#findIntersections(primitives.Ray)} and
+     * {@link geometries.Intersectable#findGeoIntersections(primitives.Ray)}: the two points come by distance
+     * along the ray, nearest first, whichever way the ray crosses.
+     */
+    @Test
+    void testIntersectionsNearestFirst() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: slanted across, off the axis: (1.8, 0.6, 1.2) then (0.2, 0.6, 2.8), and back
+        assertNearestFirst(tube, new Ray(new Point3D(2, 0.6, 1), new Vector(-1, 0, 1)),
+                List.of(new Point3D(1.8, 0.6, 1.2), new Point3D(0.2, 0.6, 2.8)), "TC01");
+        // TC02: 200 seeded random rays from 10 off the axis through a point of it: 2 points each, nearest first
+        Vector axis = tube.getAxisRay().getDir();
+        assertNearestFirstThrough(tube, rnd -> {
+            Point3D onAxis = tube.getAxisRay().getPoint(20 * rnd.nextDouble() - 10);
+            Point3D start = onAxis.add(perpendicular(rnd, axis).scale(10)).add(axis.scale(20 * rnd.nextDouble() - 10));
+            return new Ray(start, onAxis.subtract(start));
+        }, "TC02");
+
+        // ===== Boundary Values Tests =====
+        // TC10: orthogonal to the axis, through it: (0, 0, 5) then (2, 0, 5), and back
+        assertNearestFirst(tube, new Ray(new Point3D(-1, 0, 5), new Vector(1, 0, 0)),
+                List.of(new Point3D(0, 0, 5), new Point3D(2, 0, 5)), "TC10");
+        // TC11: nearly along the axis: the two points 1000 apart, (0, 0, 0) then (2, 0, 1000), and back
+        assertNearestFirst(tube, new Ray(new Point3D(-0.002, 0, -1), new Vector(0.002, 0, 1)),
+                List.of(new Point3D(0, 0, 0), new Point3D(2, 0, 1000)), "TC11");
     }
 }

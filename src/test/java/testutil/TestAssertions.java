@@ -5,15 +5,27 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Random;
+import java.util.function.Function;
+
 import org.junit.jupiter.api.function.Executable;
 
+import geometries.Intersectable;
+import geometries.Intersectable.GeoPoint;
 import primitives.Color;
+import primitives.Point3D;
+import primitives.Ray;
 import primitives.Vector;
 
 /** Assertion helpers shared by the unit tests. */
 public final class TestAssertions {
     /** Default tolerance for comparing colour components. */
     public static final double COLOR_DELTA = 1e-10;
+    /** How many seeded random rays {@link #assertNearestFirstThrough} casts. */
+    private static final int ORDER_RAYS = 200;
 
     /** Not instantiable. */
     private TestAssertions() {
@@ -43,6 +55,60 @@ public final class TestAssertions {
         String expected = assertThrows(IllegalArgumentException.class, name, tc + ": bad value accepted").getMessage();
         assertEquals(expected, assertThrows(IllegalArgumentException.class, otherName,
                 tc + ": bad value accepted by the other name").getMessage(), tc + ": a different message");
+    }
+
+    /**
+     * Asserts that a body lists the points where a ray crosses it by distance along the ray, nearest
+     * first: the expected points, through {@code findIntersections} and {@code findGeoIntersections}
+     * alike, and the same points in the reverse order along the way back (see {@link #assertNearestFirstThrough}).
+     *
+     * @param body     the body
+     * @param ray      a ray from outside the body (convex, or at least so along the line)
+     * @param expected the points, nearest first, 2 or more
+     * @param tc       the test-case label, named in the failure messages
+     */
+    public static void assertNearestFirst(Intersectable body, Ray ray, List<Point3D> expected, String tc) {
+        assertEquals(expected, assertBothWays(body, ray, expected.size(), tc), tc + ": wrong points, nearest first");
+    }
+
+    /**
+     * Asserts, for 200 seeded random rays that cross a body twice, that each gets its two points nearest
+     * first, through {@code findIntersections} and {@code findGeoIntersections} alike, and that the ray
+     * back along the same line, from a unit past the farther point, gets them in the reverse order.
+     *
+     * @param body the body
+     * @param rays draws, from the generator given, a ray from outside the body that crosses it twice
+     * @param tc   the test-case label, named in the failure messages
+     */
+    public static void assertNearestFirstThrough(Intersectable body, Function<Random, Ray> rays, String tc) {
+        Random rnd = new Random(25);
+        for (int i = 0; i < ORDER_RAYS; ++i)
+            assertBothWays(body, rays.apply(rnd), 2, tc + " (ray " + i + ")");
+    }
+
+    /** Asserts a body's points along a ray and back nearest first, and returns those along the ray. */
+    private static List<Point3D> assertBothWays(Intersectable body, Ray ray, int count, String tc) {
+        List<Point3D> points = assertAscending(body, ray, count, tc);
+        List<GeoPoint> geoPoints = body.findGeoIntersections(ray);
+        assertEquals(points, geoPoints.stream().map(gp -> gp.point).toList(),
+                tc + ": findGeoIntersections must list the points of findIntersections, in the same order");
+        Ray back = new Ray(points.get(count - 1).add(ray.getDir()), ray.getDir().scale(-1));
+        List<Point3D> reversed = new ArrayList<>(points);
+        Collections.reverse(reversed);
+        assertEquals(reversed, assertAscending(body, back, count, tc + " (the way back)"),
+                tc + ": the way back must meet the same points in the reverse order");
+        return points;
+    }
+
+    /** Asserts that a ray meets a body in a number of points, each farther from its start than the one before. */
+    private static List<Point3D> assertAscending(Intersectable body, Ray ray, int count, String tc) {
+        List<Point3D> points = body.findIntersections(ray);
+        assertNotNull(points, tc + ": the ray " + ray + " must hit");
+        assertEquals(count, points.size(), tc + ": wrong number of points along " + ray + ": " + points);
+        for (int i = 1; i < count; ++i)
+            assertTrue(ray.getP0().distance(points.get(i - 1)) < ray.getP0().distance(points.get(i)),
+                    tc + ": the points along " + ray + " must come nearest first: " + points);
+        return points;
     }
 
     /**

@@ -3,6 +3,7 @@ package testutil;
 import java.util.Random;
 
 import primitives.Point3D;
+import primitives.Ray;
 import primitives.Vector;
 
 /** Random points and directions shared by the seeded random tests. */
@@ -41,6 +42,19 @@ public final class TestRandom {
         return new Point3D(center.getX() + size * (2 * rnd.nextDouble() - 1),
                 center.getY() + size * (2 * rnd.nextDouble() - 1),
                 center.getZ() + size * (2 * rnd.nextDouble() - 1));
+    }
+
+    /**
+     * A ray aimed at a point from a random start at a distance from it, uniform over the sphere.
+     *
+     * @param rnd      the generator
+     * @param target   the point aimed at
+     * @param distance the distance of the start from the point, positive
+     * @return the ray
+     */
+    public static Ray rayThrough(Random rnd, Point3D target, double distance) {
+        Point3D start = target.add(randomUnit(rnd).scale(distance));
+        return new Ray(start, target.subtract(start));
     }
 
     /**
