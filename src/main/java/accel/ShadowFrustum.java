@@ -79,32 +79,23 @@ public final class ShadowFrustum {
     /**
      * Sets the pyramid from an apex to the parallelogram c ± a ± b.
      *
-     * @param ox the apex, x
-     * @param oy the apex, y
-     * @param oz the apex, z
-     * @param cx the centre of the base, x
-     * @param cy the centre of the base, y
-     * @param cz the centre of the base, z
-     * @param ax half of one side of the base, x
-     * @param ay half of one side of the base, y
-     * @param az half of one side of the base, z
-     * @param bx half of the other side of the base, x
-     * @param by half of the other side of the base, y
-     * @param bz half of the other side of the base, z
+     * @param apex      the apex: x, y, z
+     * @param base      the base: its centre c, half of one side a and half of the other side b, three
+     *                  coordinates each (cx, cy, cz, ax, ay, az, bx, by, bz)
      * @param thickness how far the rays may stray from the pyramid, 0 or more
      * @return false when the pyramid is flat (the apex in the base's plane, or a degenerate base):
      *         it then sets nothing aside
-     * @throws IllegalArgumentException when the thickness is negative or not a number
+     * @throws IllegalArgumentException when the apex does not have 3 numbers or the base 9, or the
+     *                                  thickness is negative or not a number
      */
-    public boolean set(double ox, double oy, double oz, double cx, double cy, double cz,
-                       double ax, double ay, double az, double bx, double by, double bz, double thickness) {
+    public boolean set(double[] apex, double[] base, double thickness) {
+        if (apex == null || apex.length != 3)
+            throw new IllegalArgumentException("the apex of a shadow frustum must have 3 coordinates");
+        if (base == null || base.length != 9)
+            throw new IllegalArgumentException("the base of a shadow frustum must have 9 numbers: c, a and b");
         if (!(thickness >= 0))
             throw new IllegalArgumentException("the thickness of a shadow frustum must be 0 or more, got " + thickness);
-        setVertex(0, ox, oy, oz);
-        setVertex(1, cx + ax + bx, cy + ay + by, cz + az + bz);
-        setVertex(2, cx - ax + bx, cy - ay + by, cz - az + bz);
-        setVertex(3, cx - ax - bx, cy - ay - by, cz - az - bz);
-        setVertex(4, cx + ax - bx, cy + ay - by, cz + az - bz);
+        setVertices(apex, base);
         double size = setHull();
         rounding = MARGIN * size;
         margin = rounding + thickness;
@@ -113,14 +104,29 @@ public final class ShadowFrustum {
         flatness = FLAT * size;
         valid = false;
         for (int side = 0; side < 4; ++side)
-            if (!setPlane(side, 1 + side, 1 + (side + 1) % 4, cx, cy, cz))
+            if (!setSide(side, 1 + side, 1 + (side + 1) % 4, base))
                 return false;
-        double nx = ay * bz - az * by;
-        double ny = az * bx - ax * bz;
-        double nz = ax * by - ay * bx;
-        valid = setPlane(4, nx, ny, nz, nx * cx + ny * cy + nz * cz, ox, oy, oz);
+        double nx = base[4] * base[8] - base[5] * base[7];
+        double ny = base[5] * base[6] - base[3] * base[8];
+        double nz = base[3] * base[7] - base[4] * base[6];
+        storePlane(4, nx, ny, nz, nx * base[0] + ny * base[1] + nz * base[2]);
+        valid = orientPlane(4, vertices, 0);
         backFace = NO_BACK_FACE;
         return valid;
+    }
+
+    /** Sets the apex and the base's corners c + a + b, c − a + b, c − a − b and c + a − b, in that order. */
+    private void setVertices(double[] apex, double[] base) {
+        System.arraycopy(apex, 0, vertices, 0, 3);
+        for (int k = 0; k < 3; ++k) {
+            double c = base[k];
+            double a = base[3 + k];
+            double b = base[6 + k];
+            vertices[3 + k] = c + a + b;
+            vertices[6 + k] = c - a + b;
+            vertices[9 + k] = c - a - b;
+            vertices[12 + k] = c + a - b;
+        }
     }
 
     /**
@@ -202,14 +208,8 @@ public final class ShadowFrustum {
         return size;
     }
 
-    private void setVertex(int i, double x, double y, double z) {
-        vertices[3 * i] = x;
-        vertices[3 * i + 1] = y;
-        vertices[3 * i + 2] = z;
-    }
-
-    /** The side through the apex and two neighbouring corners, facing away from the base's centre. */
-    private boolean setPlane(int side, int i, int j, double cx, double cy, double cz) {
+    /** The side through the apex and two neighbouring corners, facing away from the base's centre (its first three numbers). */
+    private boolean setSide(int side, int i, int j, double[] base) {
         double[] v = vertices;
         double ix = v[3 * i] - v[0];
         double iy = v[3 * i + 1] - v[1];
@@ -220,24 +220,40 @@ public final class ShadowFrustum {
         double nx = iy * jz - iz * jy;
         double ny = iz * jx - ix * jz;
         double nz = ix * jy - iy * jx;
-        return setPlane(side, nx, ny, nz, nx * v[0] + ny * v[1] + nz * v[2], cx, cy, cz);
+        storePlane(side, nx, ny, nz, nx * v[0] + ny * v[1] + nz * v[2]);
+        return orientPlane(side, base, 0);
+    }
+
+    /** Stores a plane n·x = offset at its place in {@link #planes}, as it comes: {@link #orientPlane} places it. */
+    private void storePlane(int plane, double nx, double ny, double nz, double offset) {
+        int p = 4 * plane;
+        planes[p] = nx;
+        planes[p + 1] = ny;
+        planes[p + 2] = nz;
+        planes[p + 3] = offset;
     }
 
     /**
-     * Stores a plane n·x = offset, normalised and turned so that a given inner point is inside.
+     * Normalises a plane {@link #storePlane stored} and turns it so that an inner point is inside.
      *
+     * @param plane the plane
+     * @param inner the inner point's array
+     * @param at    where its three coordinates start
      * @return false when the plane is degenerate or the inner point (nearly) on it
      */
-    private boolean setPlane(int plane, double nx, double ny, double nz, double offset, double x, double y,
-                             double z) {
+    private boolean orientPlane(int plane, double[] inner, int at) {
+        int p = 4 * plane;
+        double nx = planes[p];
+        double ny = planes[p + 1];
+        double nz = planes[p + 2];
+        double offset = planes[p + 3];
         double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
         if (!(length > 0))
             return false;
-        double distance = (nx * x + ny * y + nz * z - offset) / length;
+        double distance = (nx * inner[at] + ny * inner[at + 1] + nz * inner[at + 2] - offset) / length;
         if (!(Math.abs(distance) > flatness))
             return false;
         double scale = distance > 0 ? -1 / length : 1 / length;
-        int p = 4 * plane;
         planes[p] = nx * scale;
         planes[p + 1] = ny * scale;
         planes[p + 2] = nz * scale;
@@ -506,12 +522,10 @@ public final class ShadowFrustum {
             return false;
         if (!valid)
             return true;
-        double[] pl = planes;
-        int back = 4 * PLANES;
-        if (hasBackFace() && outside(pl[back], pl[back + 1], pl[back + 2], pl[back + 3], vertices, p1, p2, p3))
+        if (hasBackFace() && outside(PLANES, vertices, p1, p2, p3))
             return false; // first: it sets aside the many triangles around the apex
-        for (int p = 0; p < 4 * PLANES; p += 4)
-            if (outside(pl[p], pl[p + 1], pl[p + 2], pl[p + 3], vertices, p1, p2, p3))
+        for (int plane = 0; plane < PLANES; ++plane)
+            if (outside(plane, vertices, p1, p2, p3))
                 return false;
         return true;
     }
@@ -521,8 +535,12 @@ public final class ShadowFrustum {
      * n·x = offset by more than the margin. A grown vertex's distance follows from the vertices'
      * distances, the distance being affine.
      */
-    private boolean outside(double nx, double ny, double nz, double offset, double[] vertices, int p1, int p2,
-                            int p3) {
+    private boolean outside(int plane, double[] vertices, int p1, int p2, int p3) {
+        int p = 4 * plane;
+        double nx = planes[p];
+        double ny = planes[p + 1];
+        double nz = planes[p + 2];
+        double offset = planes[p + 3];
         double d1 = nx * vertices[p1] + ny * vertices[p1 + 1] + nz * vertices[p1 + 2] - offset;
         double d2 = nx * vertices[p2] + ny * vertices[p2 + 1] + nz * vertices[p2 + 2] - offset;
         double d3 = nx * vertices[p3] + ny * vertices[p3 + 1] + nz * vertices[p3 + 2] - offset;

@@ -66,6 +66,9 @@ final class LightSquare {
     private double centreDx;
     private double centreDy;
     private double centreDz;
+    /** The bundle's pyramid, as {@link ShadowFrustum#set} takes it: its apex, and its base's centre and half sides. */
+    private final double[] apex = new double[3];
+    private final double[] base = new double[9];
     private BoundingVolumeHierarchy bvh;
     private Query query;
     private Bundle bundle = Bundle.WHOLE;
@@ -183,8 +186,8 @@ final class LightSquare {
         double side = centre - spread > margin ? 1 : centre + spread < -margin ? -1 : 0;
         double thickness = side == 0 ? Ray.DELTA : 0;
         ShadowFrustum frustum = query.getFrustum();
-        if (!frustum.set(px + side * nx, py + side * ny, pz + side * nz, cx + side * nx, cy + side * ny,
-                cz + side * nz, ax, ay, az, bx, by, bz, thickness))
+        setPyramid(side, ax, ay, az, bx, by, bz);
+        if (!frustum.set(apex, base, thickness))
             return Bundle.WHOLE;
         if (onTriangle)
             frustum.setLeaving((int) side, px, py, pz, nx, ny, nz);
@@ -193,6 +196,27 @@ final class LightSquare {
         if (bvh.blocksBundle(query))
             return Bundle.BLOCKED;
         return query.isSubtreeGathered() ? Bundle.PACKET : Bundle.GATHERED;
+    }
+
+    /**
+     * Sets the bundle's pyramid for {@link ShadowFrustum#set}: the apex at the point and the base at the
+     * square, both moved off the surface to a side (or not, for side 0).
+     *
+     * @param side 1, −1 or 0: how many offsets n to move them by
+     */
+    private void setPyramid(double side, double ax, double ay, double az, double bx, double by, double bz) {
+        apex[0] = px + side * nx;
+        apex[1] = py + side * ny;
+        apex[2] = pz + side * nz;
+        base[0] = cx + side * nx;
+        base[1] = cy + side * ny;
+        base[2] = cz + side * nz;
+        base[3] = ax;
+        base[4] = ay;
+        base[5] = az;
+        base[6] = bx;
+        base[7] = by;
+        base[8] = bz;
     }
 
     /** {@return true when no ray of the bundle can be blocked: each lets all the light through} */

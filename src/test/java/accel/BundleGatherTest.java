@@ -367,7 +367,7 @@ class BundleGatherTest {
         assertTrue(blockedLow > 0 && blockedLow < 200, "TC20: rays from below blocked, from above open: " + blockedLow);
         // TC21: a refused (flat) frustum sets nothing aside: gather gives true over the row (a subtree), and
         // rays through each triangle are blocked, between them open
-        assertFalse(rowQuery.getFrustum().set(5, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0),
+        assertFalse(rowQuery.getFrustum().set(new double[] { 5, 0, 0 }, new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, 0),
                 "TC21: a flat pyramid is refused");
         assertTrue(rowBvh.gather(rowQuery), "TC21: after a refused set everything must be gathered");
         for (int i = 0; i < 40; ++i) {
@@ -376,7 +376,7 @@ class BundleGatherTest {
                     "TC21: past triangle " + i);
         }
         // TC22: a refused frustum over the ball (one body, kept one by one): true, the ray through it blocked
-        assertFalse(ballQuery.getFrustum().set(0, 0, 7, 0, 0, 7, 1, 0, 0, 0, 1, 0, 0),
+        assertFalse(ballQuery.getFrustum().set(new double[] { 0, 0, 7 }, new double[] { 0, 0, 7, 1, 0, 0, 0, 1, 0 }, 0),
                 "TC22: a flat pyramid is refused");
         assertTrue(ballBvh.gather(ballQuery), "TC22: after a refused set the ball must be gathered");
         assertRay(0, ballBvh, ballQuery, up, below, "TC22: the ray through the ball");
@@ -458,8 +458,9 @@ class BundleGatherTest {
             // the same pyramid without the back face
             Point3D apex = p.add(n);
             Point3D base = c.add(n);
-            assertTrue(query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), base.getX(), base.getY(),
-                    base.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), 0), "TC02: set again");
+            assertTrue(query.getFrustum().set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
+                    new double[] { base.getX(), base.getY(), base.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(),
+                            b.getY(), b.getZ() }, 0), "TC02: set again");
             if (bvh.gather(query))
                 ++withoutBackFace;
         }

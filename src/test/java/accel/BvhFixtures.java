@@ -116,8 +116,9 @@ final class BvhFixtures {
             Vector a = wide ? randomUnit(rnd).scale(3 + 12 * rnd.nextDouble()) : randomHalfSide(rnd);
             Vector b = wide ? randomUnit(rnd).scale(3 + 12 * rnd.nextDouble()) : randomHalfSide(rnd);
             if (a.crossProduct(b).length() < 1e-3 * a.length() * b.length()
-                    || !frustum.set(apex.getX(), apex.getY(), apex.getZ(), c.getX(), c.getY(), c.getZ(),
-                    a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), thickness))
+                    || !frustum.set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
+                            new double[] { c.getX(), c.getY(), c.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(),
+                                    b.getY(), b.getZ() }, thickness))
                 continue; // a flat pyramid: the renderer walks the tree instead
             int meeting = boxesMeeting(scene.geometries(), frustum);
             if (meeting == 0 && meeting(scene.geometries(), frustum, false) > 0)

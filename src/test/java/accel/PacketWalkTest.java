@@ -67,7 +67,8 @@ class PacketWalkTest {
      * @return the rays' answers
      */
     private static double[] plateBundle(BoundingVolumeHierarchy bvh, Query query, Point3D apex, double z) {
-        assertTrue(query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), 0.1, 0.2, z, 4, 0, 0, 0, 4, 0, 0),
+        assertTrue(query.getFrustum().set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
+                new double[] { 0.1, 0.2, z, 4, 0, 0, 0, 4, 0 }, 0),
                 "the bundle's pyramid must be set");
         bvh.gather(query);
         List<Ray> rays = new ArrayList<>();
@@ -130,7 +131,8 @@ class PacketWalkTest {
                     query.getTransmittance(r), 1e-12, "TC04: ray " + r);
         // TC05: a narrow bundle (square of half-side 0.01 at z = −4.9, nothing in between) keeps no
         // subtree, and its packet's rays each let all the light through
-        assertTrue(query.getFrustum().set(0.05, 0.1, -5, 0.05, 0.1, -4.9, 0.01, 0, 0, 0, 0.01, 0, 0),
+        assertTrue(query.getFrustum().set(new double[] { 0.05, 0.1, -5 },
+                new double[] { 0.05, 0.1, -4.9, 0.01, 0, 0, 0, 0.01, 0 }, 0),
                 "TC05: the pyramid must be set");
         bvh.gather(query);
         assertFalse(query.isSubtreeGathered(), "TC05: no subtree for a bundle that meets nothing");
@@ -216,7 +218,8 @@ class PacketWalkTest {
      */
     private static double[] cellsPacket(BoundingVolumeHierarchy bvh, Query query, double[] targets, double minK,
                                         String tc) {
-        assertTrue(query.getFrustum().set(0, 0, -50, 0, 0, 1, 4.5, 0, 0, 0, 4.5, 0, 0), tc
+        assertTrue(query.getFrustum().set(new double[] { 0, 0, -50 }, new double[] { 0, 0, 1, 4.5, 0, 0, 0, 4.5, 0 },
+                0), tc
                 + ": the pyramid must be set");
         bvh.gather(query);
         assertTrue(query.isSubtreeGathered(), tc + ": the bundle meets more than 32 bodies: a packet is walked");

@@ -9,6 +9,7 @@ import static testutil.TestAssertions.assertMessage;
 import static testutil.TestBundles.randomPyramid;
 import static testutil.TestBundles.raySegment;
 import static testutil.TestBundles.segmentPoint;
+import static testutil.TestBundles.setPyramid;
 import static testutil.TestBundles.strayVector;
 
 import java.util.Arrays;
@@ -53,7 +54,8 @@ class ShadowFrustumTest {
      */
     private static ShadowFrustum standard(double thickness) {
         ShadowFrustum frustum = new ShadowFrustum();
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, thickness), "the standard pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, thickness),
+                "the standard pyramid must be set");
         return frustum;
     }
 
@@ -111,53 +113,83 @@ class ShadowFrustumTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: apex off the base's plane, a and b independent: true
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC01: a proper pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC01: a proper pyramid must be set");
         // TC02: a slanted base (a, b not orthogonal, not along the axes) seen from aside: true
-        assertTrue(frustum.set(1, -2, 3, 7, 5, -4, 1, 2, 0.5, -0.5, 1, 3, 0), "TC02: a slanted pyramid must be set");
+        assertTrue(frustum.set(new double[] { 1, -2, 3 }, new double[] { 7, 5, -4, 1, 2, 0.5, -0.5, 1, 3 }, 0),
+                "TC02: a slanted pyramid must be set");
         // TC03: the apex in the base's plane (here its centre): false
-        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC03: apex at the base's centre is flat");
+        assertFalse(frustum.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC03: apex at the base's centre is flat");
         // TC04: the apex in the base's plane, outside the base: false
-        assertFalse(frustum.set(5, 7, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC04: apex in the base's plane is flat");
+        assertFalse(frustum.set(new double[] { 5, 7, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC04: apex in the base's plane is flat");
         // TC05: after a flat pyramid the same instance is set again properly: true, and it works
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0),
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
                 "TC05: a flat pyramid must not spoil the next set");
         assertTrue(meets(frustum, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC05: the reset pyramid must meet a box inside it");
         assertFalse(meets(frustum, -0.5, -0.5, -2, 0.5, 0.5, -1),
                 "TC05: the reset pyramid must reject a box behind it");
         // TC06: a proper pyramid with a thickness 0.1 (the renderer's thick bundles): true
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC06: a thick pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
+                "TC06: a thick pyramid must be set");
         // TC07: the apex in the base's plane with a thickness 0.1: still flat, false
-        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC07: a thick flat pyramid is flat");
+        assertFalse(frustum.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
+                "TC07: a thick flat pyramid is flat");
 
         // ===== Boundary Values Tests =====
         // TC11: a = 0 (the base is a segment): false
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 2, 0, 0), "TC11: a = 0 is a degenerate base");
+        assertFalse(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 0, 0, 0, 0, 2, 0 }, 0),
+                "TC11: a = 0 is a degenerate base");
         // TC12: b = 0: false
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 0, 0, 0), "TC12: b = 0 is a degenerate base");
+        assertFalse(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 0, 0 }, 0),
+                "TC12: b = 0 is a degenerate base");
         // TC13: a parallel to b: false
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, -3, 0, 0, 0), "TC13: a parallel to b is a degenerate base");
+        assertFalse(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, -3, 0, 0 }, 0),
+                "TC13: a parallel to b is a degenerate base");
         // TC14: a and b both 0 (the base is a point): false
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0), "TC14: a point base is degenerate");
+        assertFalse(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 0, 0, 0, 0, 0, 0 }, 0),
+                "TC14: a point base is degenerate");
         // TC15: the apex just off the base's plane (1e-3 of a size of 28, far above the flatness 2.8e-8): true
-        assertTrue(frustum.set(0, 0, 10 - 1e-3, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC15: a very low pyramid is not flat");
+        assertTrue(frustum.set(new double[] { 0, 0, 10 - 1e-3 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC15: a very low pyramid is not flat");
         // TC16: the apex off the plane by 1e-12 (below the flatness): false
-        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0),
+        assertFalse(frustum.set(new double[] { 0, 0, 10 - 1e-12 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
                 "TC16: a pyramid this low counts as flat");
         // TC17: a tiny light (edge 2e-3) far away (distance 50): a thin pyramid, still true
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 50, 1e-3, 0, 0, 0, 1e-3, 0, 0), "TC17: a thin pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 50, 1e-3, 0, 0, 0, 1e-3, 0 }, 0),
+                "TC17: a thin pyramid must be set");
         // TC18: a thickness far larger than the pyramid (10 around a pyramid of size 28): true
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 10), "TC18: a very thick pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 10),
+                "TC18: a very thick pyramid must be set");
         // TC19: a thickness that does not lift the flatness: the pyramid 1e-12 low is flat even 1 thick
-        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 1),
+        assertFalse(frustum.set(new double[] { 0, 0, 10 - 1e-12 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 1),
                 "TC19: a thickness must not make a flat pyramid proper");
         // TC20: a negative thickness is rejected with a message naming the thickness
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, -1e-9), "TC20: a negative thickness must throw");
+                () -> frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, -1e-9),
+                "TC20: a negative thickness must throw");
         assertMessage(e, "thickness", "TC20");
         // TC21: a thickness that is not a number is rejected too
         e = assertThrows(IllegalArgumentException.class,
-                () -> frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, Double.NaN), "TC21: a NaN thickness must throw");
+                () -> frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, Double.NaN),
+                "TC21: a NaN thickness must throw");
         assertMessage(e, "thickness", "TC21");
+        // TC22: an apex of 2 numbers, or none, is rejected with a message naming the apex
+        double[] base = { 0, 0, 10, 2, 0, 0, 0, 2, 0 };
+        e = assertThrows(IllegalArgumentException.class, () -> frustum.set(new double[] { 0, 0 }, base, 0),
+                "TC22: an apex of 2 numbers must throw");
+        assertMessage(e, "apex", "TC22");
+        e = assertThrows(IllegalArgumentException.class, () -> frustum.set(null, base, 0),
+                "TC22: a null apex must throw");
+        assertMessage(e, "apex", "TC22");
+        // TC23: a base of 8 or 10 numbers, or none, is rejected with a message naming the base
+        double[] apex = { 0, 0, 0 };
+        for (double[] wrong : new double[][] { new double[8], new double[10], null }) {
+            e = assertThrows(IllegalArgumentException.class, () -> frustum.set(apex, wrong, 0),
+                    "TC23: a base of other than 9 numbers must throw");
+            assertMessage(e, "base", "TC23");
+        }
     }
 
     /** Test method for {@link ShadowFrustum#meetsBox(double[], int)}. */
@@ -240,7 +272,8 @@ class ShadowFrustumTest {
         // TC12: a box touching the apex from behind (max corner (0, 0, 0)): true
         assertTrue(meetsFloats(frustum, -1, -1, -1, 0, 0, 0), "TC12: a box touching the apex must be met");
         // TC13: after a refused set every box is met: true
-        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC13: the flat pyramid must be refused");
+        assertFalse(frustum.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC13: the flat pyramid must be refused");
         assertTrue(meetsFloats(frustum, -1, -1, 10.5, 1, 1, 11), "TC13: a refused frustum must set no box aside");
     }
 
@@ -307,7 +340,8 @@ class ShadowFrustumTest {
         assertTrue(meetsTriangle(standard(0.5), 1 + 1e-4 * len, 0, 5, 2.5, 0, 10, 5, 0, 10),
                 "TC16: a triangle within the thickness must be met");
         // TC17: after a refused set every triangle is met: true
-        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC17: the flat pyramid must be refused");
+        assertFalse(frustum.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC17: the flat pyramid must be refused");
         assertTrue(meetsTriangle(frustum, 0.5, -1, -1, 1, 1, -1, 0.8, 0, -3),
                 "TC17: a refused frustum must set no triangle aside");
     }
@@ -323,7 +357,8 @@ class ShadowFrustumTest {
      * @return the frustum
      */
     private static ShadowFrustum slanted(ShadowFrustum frustum) {
-        assertTrue(frustum.set(0, 0, 0, 5, -3, 0, 0.5, 0.5, -1, 0.1, 0.1, 0.1, 0), "the slanted pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 5, -3, 0, 0.5, 0.5, -1, 0.1, 0.1, 0.1 }, 0),
+                "the slanted pyramid must be set");
         return frustum;
     }
 
@@ -417,7 +452,8 @@ class ShadowFrustumTest {
         ShadowFrustum fresh = new ShadowFrustum();
         assertFalse(backFace(fresh, 0, 0, 1), "TC16: an unset frustum must refuse a back face");
         assertTrue(meets(fresh, -1, -1, -2, 1, 1, -1), "TC16: an unset frustum must set no box aside");
-        assertFalse(standard.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC16: the flat pyramid must be refused");
+        assertFalse(standard.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC16: the flat pyramid must be refused");
         assertFalse(backFace(standard, 0, 0, 1), "TC16: a refused frustum must refuse a back face");
         assertTrue(meets(standard, -1, -1, -2, 1, 1, -1), "TC16: a refused frustum must set no box aside");
         assertTrue(meetsTriangle(standard, -5, -5, -1, 5, -5, -1, 0, 5, -1),
@@ -714,13 +750,15 @@ class ShadowFrustumTest {
         // TC01: a new frustum (expects false)
         assertFalse(frustum.hasOrigins(), "TC01: a new frustum has no starts");
         // TC02: after set (expects false)
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC02: the pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
+                "TC02: the pyramid must be set");
         assertFalse(frustum.hasOrigins(), "TC02: set gives no starts");
         // TC03: setOrigins with a non-zero n (expects true)
         frustum.setOrigins(1, 2, 3, 0, 0.1, 0);
         assertTrue(frustum.hasOrigins(), "TC03: setOrigins with a non-zero offset");
         // TC04: a new set after setOrigins (expects false)
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC04: the pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
+                "TC04: the pyramid must be set");
         assertFalse(frustum.hasOrigins(), "TC04: a new set forgets the starts");
 
         // ===== Boundary Values Tests =====
@@ -735,7 +773,8 @@ class ShadowFrustumTest {
         frustum.setOrigins(1, 2, 3, Double.MIN_VALUE, 0, 0);
         assertTrue(frustum.hasOrigins(), "TC12: a tiny offset still sets starts");
         // TC13: a refused (flat) set after setOrigins (expects false)
-        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC13: the flat pyramid must be refused");
+        assertFalse(frustum.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
+                "TC13: the flat pyramid must be refused");
         assertFalse(frustum.hasOrigins(), "TC13: a refused set forgets the starts too");
     }
 
@@ -845,7 +884,8 @@ class ShadowFrustumTest {
         assertFalse(thick.meetsPlane(0, 0, 1, 0, 0, -0.5 - 1e-4),
                 "TC13: a plane beyond thickness + margin must be set aside");
         // TC14: the same instance set again with thickness 0: the box and plane of TC01/TC07 are set aside again
-        assertTrue(thick.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC14: the thin pyramid must be set");
+        assertTrue(thick.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC14: the thin pyramid must be set");
         assertFalse(meets(thick, 1.4, -0.1, 0, 2, 0.1, 5), "TC14: the thickness must not outlive its set");
         assertFalse(thick.meetsPlane(0, 0, 1, 0, 0, -0.4), "TC14: the thickness must not outlive its set");
     }
@@ -865,7 +905,8 @@ class ShadowFrustumTest {
         assertTrue(meets(fresh, far), "TC01: an unset frustum must set no box aside");
         assertTrue(fresh.meetsPlane(1, 0, 0, 1000, 0, 0), "TC01: an unset frustum must set no plane aside");
         // TC02: a new instance whose first set is refused (apex at the base's centre): everything met
-        assertFalse(fresh.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC02: the flat pyramid must be refused");
+        assertFalse(fresh.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC02: the flat pyramid must be refused");
         assertTrue(meets(fresh, far), "TC02: a refused frustum must set no box aside");
         assertTrue(meets(fresh, -1, -1, -2, 1, 1, -1), "TC02: a refused frustum must set no box aside");
         assertTrue(fresh.meetsPlane(1, 0, 0, 1000, 0, 0), "TC02: a refused frustum must set no plane aside");
@@ -875,7 +916,8 @@ class ShadowFrustumTest {
         ShadowFrustum frustum = standard();
         assertFalse(meets(frustum, -1, -1, -2, 1, 1, -1), "TC03: the proper pyramid rejects the box behind it");
         assertFalse(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC03: the proper pyramid rejects the plane behind it");
-        assertFalse(frustum.set(5, 7, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC03: the flat pyramid must be refused");
+        assertFalse(frustum.set(new double[] { 5, 7, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC03: the flat pyramid must be refused");
         assertTrue(meets(frustum, -1, -1, -2, 1, 1, -1), "TC03: after a refused set the box must be met");
         assertTrue(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC03: after a refused set the plane must be met");
         assertTrue(meets(frustum, far), "TC03: after a refused set a far box must be met");
@@ -883,19 +925,23 @@ class ShadowFrustumTest {
 
         // ===== Boundary Values Tests =====
         // TC11: refused for a degenerate base (a = 0) after a proper thick set: everything met
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0.1), "TC11: the proper pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
+                "TC11: the proper pyramid must be set");
         assertFalse(meets(frustum, far), "TC11: the proper pyramid rejects the far box");
-        assertFalse(frustum.set(0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 2, 0, 0.1), "TC11: a = 0 must be refused");
+        assertFalse(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 0, 0, 0, 0, 2, 0 }, 0.1),
+                "TC11: a = 0 must be refused");
         assertTrue(meets(frustum, far), "TC11: after a refused set the far box must be met");
         assertTrue(frustum.meetsPlane(1, 0, 0, 1000, 0, 0), "TC11: after a refused set the far plane must be met");
         // TC12: refused for a pyramid just too low (1e-12): everything met
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC12: the proper pyramid must be set");
-        assertFalse(frustum.set(0, 0, 10 - 1e-12, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0),
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC12: the proper pyramid must be set");
+        assertFalse(frustum.set(new double[] { 0, 0, 10 - 1e-12 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
                 "TC12: the low pyramid must be refused");
         assertTrue(meets(frustum, far), "TC12: after a refused set the far box must be met");
         assertTrue(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC12: after a refused set the plane behind must be met");
         // TC13: a proper set after the refused one sets boxes and planes aside again
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC13: the proper pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC13: the proper pyramid must be set");
         assertFalse(meets(frustum, far), "TC13: the proper pyramid must reject the far box again");
         assertFalse(frustum.meetsPlane(0, 0, 1, 0, 0, -1), "TC13: the proper pyramid must reject the plane again");
         assertTrue(meets(frustum, -0.5, -0.5, 4, 0.5, 0.5, 5), "TC13: the proper pyramid must meet a box inside it");
@@ -938,9 +984,9 @@ class ShadowFrustumTest {
         for (int f = 0; f < 400; ++f) {
             double[] p = randomPyramid(rnd);
             double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
-            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], thickness))
+            if (!setPyramid(frustum, p, thickness))
                 continue;
-            assertTrue(thin.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], 0),
+            assertTrue(setPyramid(thin, p, 0),
                     "TC01: the thickness must not change whether a pyramid is flat");
             double[][] segments = new double[200][];
             double[][] samples = new double[200][];
@@ -1151,12 +1197,14 @@ class ShadowFrustumTest {
         // TC07: a slanted pyramid (apex (1, −2, 3), base (7, 5, −4) ± (1, 2, 0.5) ± (−0.5, 1, 3), its
         // corners up to 4.7 from the centre) and a ball of radius about 2.5 on its axis at λ = 0.3 (the
         // section's corners up to 1.4 from it), its box (x up to 5.3) short of the base (x from 5.5): true
-        assertTrue(frustum.set(1, -2, 3, 7, 5, -4, 1, 2, 0.5, -0.5, 1, 3, 0), "TC07: the slanted pyramid must be set");
+        assertTrue(frustum.set(new double[] { 1, -2, 3 }, new double[] { 7, 5, -4, 1, 2, 0.5, -0.5, 1, 3 }, 0),
+                "TC07: the slanted pyramid must be set");
         Point3D onAxis = new Point3D(1 + 0.3 * 6, -2 + 0.3 * 7, 3 - 0.3 * 7);
         assertTrue(crosses(frustum, InnerBallTest.cubeBall(onAxis, 2.5), boxAround(onAxis, 2.5)),
                 "TC07: a ball across a slanted pyramid must block it");
         // TC08: after a refused set (a flat pyramid), TC01's ball: false
-        assertFalse(frustum.set(0, 0, 10, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC08: the flat pyramid must be refused");
+        assertFalse(frustum.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC08: the flat pyramid must be refused");
         assertFalse(crosses(frustum, wide, wideBox), "TC08: a refused frustum must block nothing");
         assertFalse(frustum.sectionInside(wide), "TC08: a refused frustum has no section inside a ball");
 

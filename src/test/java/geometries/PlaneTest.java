@@ -216,7 +216,8 @@ class PlaneTest {
     void testMayMeet() {
         // the pyramid from the apex (0, 0, 5) to the square (±1, ±1, −1) below it
         ShadowFrustum frustum = new ShadowFrustum();
-        assertTrue(frustum.set(0, 0, 5, 0, 0, -1, 1, 0, 0, 0, 1, 0, 0), "the pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 5 }, new double[] { 0, 0, -1, 1, 0, 0, 0, 1, 0 }, 0),
+                "the pyramid must be set");
 
         // ===== Equivalence Partitions Tests =====
         // TC01: the plane z = 0 crosses the pyramid: true

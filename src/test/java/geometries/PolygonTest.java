@@ -357,7 +357,8 @@ class PolygonTest {
      */
     static ShadowFrustum pyramid(Point3D apex, double cz, double thickness) {
         ShadowFrustum frustum = new ShadowFrustum();
-        assertTrue(frustum.set(apex.getX(), apex.getY(), apex.getZ(), 0, 0, cz, 1, 0, 0, 0, 1, 0, thickness),
+        assertTrue(frustum.set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
+                new double[] { 0, 0, cz, 1, 0, 0, 0, 1, 0 }, thickness),
                 "the pyramid must be set");
         return frustum;
     }
@@ -392,7 +393,8 @@ class PolygonTest {
         assertTrue(square.mayMeet(pyramid(new Point3D(0, 0, 0.05), 5, 0.1)), "TC12: within the thickness");
         // TC13: a flat pyramid (the set refused): true
         ShadowFrustum flat = new ShadowFrustum();
-        assertFalse(flat.set(0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1, 0, 0), "TC13: a flat pyramid is refused");
+        assertFalse(flat.set(new double[] { 0, 0, 1 }, new double[] { 0, 0, 1, 1, 0, 0, 0, 1, 0 }, 0),
+                "TC13: a flat pyramid is refused");
         assertTrue(square.mayMeet(flat), "TC13: a refused pyramid sets nothing aside");
     }
 }

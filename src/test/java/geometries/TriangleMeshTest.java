@@ -293,14 +293,16 @@ class TriangleMeshTest {
         BoundingVolumeHierarchy tilted = BoundingVolumeHierarchy.build(
                 new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 1 }, new int[] { 0, 1, 2 }));
         Query tiltedQuery = tilted.newQuery();
-        assertTrue(tiltedQuery.getFrustum().set(0.9, 0.1, 0.3, 0.9, -5, 10, 1, 0, 0, 0, 1, 0, 0),
+        assertTrue(tiltedQuery.getFrustum().set(new double[] { 0.9, 0.1, 0.3 },
+                new double[] { 0.9, -5, 10, 1, 0, 0, 0, 1, 0 }, 0),
                 "TC03: the pyramid must be set");
         assertTrue(tiltedQuery.getFrustum().meetsBox(new double[] { 0, 0, 0, 1, 1, 1 }, 0),
                 "TC03: the pyramid must meet the tilted triangle's box");
         assertFalse(tilted.gather(tiltedQuery), "TC03: the tilted triangle's plane must leave the bundle open");
         BoundingVolumeHierarchy upright = BoundingVolumeHierarchy.build(mesh);
         Query uprightQuery = upright.newQuery();
-        assertTrue(uprightQuery.getFrustum().set(0.5, 0.5, 0.1, 0.5, 0.5, 5, 1, 0, 0, 0, 1, 0, 0),
+        assertTrue(uprightQuery.getFrustum().set(new double[] { 0.5, 0.5, 0.1 },
+                new double[] { 0.5, 0.5, 5, 1, 0, 0, 0, 1, 0 }, 0),
                 "TC03: the pyramid must be set");
         assertTrue(upright.gather(uprightQuery), "TC03: the upright triangle must close the bundle");
         // TC04: the pyramid from (0, 0, 0) to the square (±2, ±2, 10) and, in the plane y = 0 (which
@@ -312,7 +314,8 @@ class TriangleMeshTest {
                 new double[] { 1.1, 0, 0, 2.5, 0, 10, 5, 0, 10 }, new int[] { 0, 1, 2 }));
         Query besideQuery = besideTree.newQuery();
         ShadowFrustum side = besideQuery.getFrustum();
-        assertTrue(side.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "TC04: the pyramid must be set");
+        assertTrue(side.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "TC04: the pyramid must be set");
         assertTrue(side.meetsBox(new double[] { 1.1, 0, 0, 5, 0, 10 }, 0), "TC04: the pyramid must meet the box");
         assertFalse(beside.mayMeet(0, side), "TC04: a triangle beside the pyramid must not meet it");
         assertFalse(besideTree.gather(besideQuery), "TC04: a triangle beside the pyramid must leave the bundle open");

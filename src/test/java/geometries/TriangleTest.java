@@ -384,7 +384,8 @@ class TriangleTest {
     void testMayMeet() {
         // the pyramid from (0, 0, 0) to the square (±2, ±2, 10): its sides x = ±z/5 and y = ±z/5
         ShadowFrustum frustum = new ShadowFrustum();
-        assertTrue(frustum.set(0, 0, 0, 0, 0, 10, 2, 0, 0, 0, 2, 0, 0), "the pyramid must be set");
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
+                "the pyramid must be set");
         // ===== Equivalence Partitions Tests =====
         // TC01: a triangle across the pyramid's axis, (−1, −1, 5), (1, −1, 5), (0, 1, 5): true
         assertTrue(new Triangle(new Point3D(-1, -1, 5), new Point3D(1, -1, 5), new Point3D(0, 1, 5)).mayMeet(frustum),

@@ -8,6 +8,7 @@ import static testutil.BruteForce.transmittance;
 import static testutil.TestRandom.edgeOrInner;
 import static testutil.TestRandom.randomUnit;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import java.util.function.Supplier;
@@ -70,8 +71,9 @@ public final class TestBundles {
      */
     public static boolean gather(BoundingVolumeHierarchy bvh, Query query, Point3D apex, Point3D c, Vector a,
                                   Vector b, double thickness) {
-        assertTrue(query.getFrustum().set(apex.getX(), apex.getY(), apex.getZ(), c.getX(), c.getY(), c.getZ(),
-                a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), thickness),
+        assertTrue(query.getFrustum().set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
+                new double[] { c.getX(), c.getY(), c.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(),
+                        b.getZ() }, thickness),
                 "the bundle's pyramid must not be flat");
         return bvh.gather(query);
     }
@@ -278,8 +280,9 @@ public final class TestBundles {
         Point3D apex = side == 0 ? p : p.add(n.scale(side));
         Point3D base = side == 0 ? c : c.add(n.scale(side));
         ShadowFrustum frustum = query.getFrustum();
-        if (!frustum.set(apex.getX(), apex.getY(), apex.getZ(), base.getX(), base.getY(), base.getZ(), a.getX(),
-                a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ(), side == 0 ? Ray.DELTA : 0))
+        if (!frustum.set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
+                new double[] { base.getX(), base.getY(), base.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(),
+                        b.getZ() }, side == 0 ? Ray.DELTA : 0))
             return null;
         if (facet && side != 0) {
             frustum.setBackFace(side * n.getX(), side * n.getY(), side * n.getZ());
@@ -417,6 +420,18 @@ public final class TestBundles {
     }
 
     /**
+     * Sets a frustum to a pyramid of {@link #randomPyramid}'s numbers.
+     *
+     * @param frustum   the frustum
+     * @param p         the pyramid: apex, c, a, b
+     * @param thickness the frustum's thickness
+     * @return what {@link ShadowFrustum#set} answers: false for a flat pyramid
+     */
+    public static boolean setPyramid(ShadowFrustum frustum, double[] p, double thickness) {
+        return frustum.set(Arrays.copyOfRange(p, 0, 3), Arrays.copyOfRange(p, 3, 12), thickness);
+    }
+
+    /**
      * A random pyramid: apex and base centre in [−20, 20]³, half-sides a and b of random directions
      * and lengths 0.01..5.
      *
@@ -461,7 +476,7 @@ public final class TestBundles {
         public static RandomBundle set(Random rnd, ShadowFrustum frustum, int f) {
             double[] p = randomPyramid(rnd);
             double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
-            if (!frustum.set(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], thickness))
+            if (!setPyramid(frustum, p, thickness))
                 return null;
             double[][] segments = new double[200][];
             for (int i = 0; i < segments.length; ++i)
