@@ -47,6 +47,10 @@ import testutil.TestMeshes;
  * builds the render's hierarchy), the median seconds of the timed frames (warm: the hierarchy is
  * built once, not per frame), million shadow rays per second, and million rays (primary, shadow and
  * spread) per second;</li>
+ * <li>the traced shadow rays of a frame (neither open nor blocked), the median CPU time of a frame (all
+ * the process's threads, as the operating system counts it, in steps of 10 ms on Linux: on a shared
+ * machine it counts the time the render ran, not the time it waited) and that time per traced ray,
+ * an upper bound of a traced ray's cost, since it includes the primary rays and the shading;</li>
  * <li>with glossy or blurry surfaces, the spread rays of a frame.</li>
  * </ul>
  * <p>
@@ -194,9 +198,12 @@ public final class Benchmark {
                 first = seconds;
         }
         double[] seconds = new double[frames];
+        double[] cpuSeconds = new double[frames];
         long[] counts = null;
         for (int f = 0; f < frames; ++f) {
+            long cpuStart = processCpuNanos();
             seconds[f] = frame.timedRender();
+            cpuSeconds[f] = (processCpuNanos() - cpuStart) / 1e9;
             counts = frame.counts();
         }
         frame.render.writeToImage();
@@ -214,9 +221,10 @@ public final class Benchmark {
                         + " %.2f M shadow rays/s, %.2f M rays/s%n",
                 name, frame.size * frame.size, primary, shadow, 100.0 * open / shadow, 100.0 * blocked / shadow, first,
                 median, format(seconds), shadow / median / 1e6, (primary + shadow + spread) / median / 1e6);
-        System.out.printf("%s: %d traced shadow rays/frame, %.0f ns of thread time per traced shadow ray"
-                        + " (threads x frame / traced rays: shading and primary rays included)%n",
-                name, traced, threads * median * 1e9 / traced);
+        double cpu = median(cpuSeconds);
+        System.out.printf("%s: %d traced shadow rays/frame, median %.3f s of CPU time/frame, %.0f ns of it per"
+                        + " traced shadow ray (shading and primary rays included)%n",
+                name, traced, cpu, cpu * 1e9 / traced);
         if (spread > 0)
             System.out.printf("%s: %d spread rays/frame%n", name, spread);
     }
@@ -480,6 +488,12 @@ public final class Benchmark {
         for (int s = 0; s < CENTERS.length; ++s)
             meshes.add(SphereMesh.mesh(CENTERS[s], RADII[s], MESH_RINGS, MESH_SEGMENTS));
         return meshes;
+    }
+
+    /** {@return the CPU time of this process so far, in ns, all its threads together} */
+    private static long processCpuNanos() {
+        return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean())
+                .getProcessCpuTime();
     }
 
     /**
