@@ -113,15 +113,16 @@ final class BundleGather {
                     return false;
                 int part = bodies.bodyPart[b];
                 int d = Query.GATHERED_TRIANGLE * slot;
+                double[] data = query.gatheredTriangles;
                 if (part >= 0) {
                     TriangleMesh mesh = (TriangleMesh) bodies.owner(b);
-                    mesh.triangleData(part, query.gatheredTriangles, d);
-                    query.gatheredTriangles[d + TriangleMesh.TRIANGLE_DATA] = bodies.kT(mesh, part);
+                    mesh.triangleVertices(part, data, d);
+                    data[d + TriangleMesh.TRIANGLE_VERTICES] = bodies.kT(mesh, part);
                 }
                 query.gathered[slot] = part >= 0 ? -1 : b;
                 query.gatheredCount = slot + 1;
                 if (frustum.hasOrigins())
-                    listByOrigins(query, slot, part >= 0 ? frustum.originsBehind(query.gatheredTriangles, d) : 0);
+                    listByOrigins(query, slot, part >= 0 ? frustum.originsBehind(data, d, d + 3, d + 6) : 0);
             }
         return true;
     }
@@ -217,7 +218,7 @@ final class BundleGather {
             return ray.attenuateBy(bodies.owner(b));
         double[] data = query.gatheredTriangles;
         int d = Query.GATHERED_TRIANGLE * i;
-        return Triangle.intersect(data, d, ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT) == Geometry.NO_HIT
-                || ray.attenuate(data[d + TriangleMesh.TRIANGLE_DATA]);
+        return Triangle.intersect(data, d, d + 3, d + 6, data[d + 9], ray) == Geometry.NO_HIT
+                || ray.attenuate(data[d + TriangleMesh.TRIANGLE_VERTICES]);
     }
 }

@@ -26,7 +26,7 @@ final class ClosestHitWalk {
     void closestHit(Query query, RayState ray) {
         ray.startClosestHit();
         for (Geometry body : bodies.unbounded)
-            ray.keepNearer(body.nearestHit(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT), body, -1);
+            ray.keepNearer(body.nearestHit(ray), body, -1);
         if (nodes.count > 0)
             walk(query, ray);
     }
@@ -88,10 +88,10 @@ final class ClosestHitWalk {
         int part = bodies.bodyPart[b];
         Geometry body = bodies.owner(b);
         if (part < 0) {
-            ray.keepNearer(body.nearestHit(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT), body, -1);
+            ray.keepNearer(body.nearestHit(ray), body, -1);
             return;
         }
-        double t = ((TriangleMesh) body).triangleHit(part, ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT);
+        double t = ((TriangleMesh) body).triangleHit(part, ray);
         if (t != Geometry.NO_HIT)
             ray.keepNearer(t, body, part);
     }

@@ -223,17 +223,7 @@ final class PacketWalk {
      */
     private static int triangleOnPacket(Packet packet, TriangleMesh mesh, int part, double kT, int count) {
         double[] data = packet.triangle;
-        mesh.triangleData(part, data, 0);
-        // in locals, read once per leaf, not from the array for each ray
-        double p1x = data[0];
-        double p1y = data[1];
-        double p1z = data[2];
-        double e1x = data[3];
-        double e1y = data[4];
-        double e1z = data[5];
-        double e2x = data[6];
-        double e2y = data[7];
-        double e2z = data[8];
+        mesh.triangleVertices(part, data, 0);
         double limit = data[9];
         int[] list = packet.leafRays;
         RayState[] rays = packet.rays;
@@ -241,8 +231,7 @@ final class PacketWalk {
         for (int i = 0; i < count; ++i) {
             int r = list[i];
             RayState ray = rays[r];
-            if (Triangle.intersect(p1x, p1y, p1z, e1x, e1y, e1z, e2x, e2y, e2z, limit, ray.ox, ray.oy, ray.oz,
-                    ray.dx, ray.dy, ray.dz, ray.maxT) == Geometry.NO_HIT || through(ray, ray.attenuate(kT)))
+            if (Triangle.intersect(data, 0, 3, 6, limit, ray) == Geometry.NO_HIT || through(ray, ray.attenuate(kT)))
                 list[kept++] = r;
         }
         return kept;

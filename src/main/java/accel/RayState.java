@@ -6,6 +6,7 @@ import geometries.Geometry;
  * One ray's numbers for a walk of the hierarchy: its origin, unit direction, the direction's inverse
  * and sign bits (set by {@link #invert}, for the slab test), the distance that counts, and the running
  * answer: the closest hit so far, or the transmittance so far and the product below which it is 0.
+ * The bodies' own tests ({@link Geometry#nearestHit(RayState)}) read its ray through the accessors.
  */
 public final class RayState {
     /** What {@link #boxEntry} answers for a ray that misses the box: no entry distance is negative. */
@@ -54,6 +55,41 @@ public final class RayState {
         this.dz = dz;
         this.maxT = maxT;
         return this;
+    }
+
+    /** {@return the origin, x} */
+    public double ox() {
+        return ox;
+    }
+
+    /** {@return the origin, y} */
+    public double oy() {
+        return oy;
+    }
+
+    /** {@return the origin, z} */
+    public double oz() {
+        return oz;
+    }
+
+    /** {@return the unit direction, x} */
+    public double dx() {
+        return dx;
+    }
+
+    /** {@return the unit direction, y} */
+    public double dy() {
+        return dy;
+    }
+
+    /** {@return the unit direction, z} */
+    public double dz() {
+        return dz;
+    }
+
+    /** {@return the distance that counts: a body's hit beyond it is none} */
+    public double maxT() {
+        return maxT;
     }
 
     /**
@@ -137,7 +173,7 @@ public final class RayState {
      * @return false once the light is blocked (below minK or 0)
      */
     boolean attenuateBy(Geometry body) {
-        return attenuate(body.transmittance(ox, oy, oz, dx, dy, dz, maxT));
+        return attenuate(body.transmittance(this));
     }
 
     /** Starts a closest-hit query: nothing hit yet, up to {@link Geometry#NO_HIT}. */

@@ -333,16 +333,21 @@ public final class ShadowFrustum {
      * across n, which a ray from there leaves forward, or behind the one through p − n across −n. A
      * ray from such an origin cannot meet the triangle.
      *
-     * @param data   the triangle as its test takes it: p1, the edges p2 − p1 and p3 − p1
-     * @param offset where the nine numbers start
+     * @param vertices the coordinates of the vertices, three doubles each
+     * @param p1       where the first vertex's x lies in vertices
+     * @param p2       where the second vertex's x lies
+     * @param p3       where the third vertex's x lies
      * @return {@link #ABOVE}, {@link #BELOW}, both or 0 (always 0 when no ray origins are set)
      */
-    int originsBehind(double[] data, int offset) {
+    int originsBehind(double[] vertices, int p1, int p2, int p3) {
         if (!originsSet)
             return 0;
-        return originsBehind(along(data[offset] - originX, data[offset + 1] - originY, data[offset + 2] - originZ),
-                along(data[offset + 3], data[offset + 4], data[offset + 5]),
-                along(data[offset + 6], data[offset + 7], data[offset + 8]));
+        double x = vertices[p1];
+        double y = vertices[p1 + 1];
+        double z = vertices[p1 + 2];
+        return originsBehind(along(x - originX, y - originY, z - originZ),
+                along(vertices[p2] - x, vertices[p2 + 1] - y, vertices[p2 + 2] - z),
+                along(vertices[p3] - x, vertices[p3 + 1] - y, vertices[p3 + 2] - z));
     }
 
     /**
@@ -357,14 +362,7 @@ public final class ShadowFrustum {
      * @return true when it lies behind both (never when no ray origins are set)
      */
     boolean behindOrigins(double[] vertices, int p1, int p2, int p3) {
-        if (!originsSet)
-            return false;
-        double x = vertices[p1];
-        double y = vertices[p1 + 1];
-        double z = vertices[p1 + 2];
-        boolean behind = originsBehind(along(x - originX, y - originY, z - originZ),
-                along(vertices[p2] - x, vertices[p2 + 1] - y, vertices[p2 + 2] - z),
-                along(vertices[p3] - x, vertices[p3 + 1] - y, vertices[p3 + 2] - z)) == (ABOVE | BELOW);
+        boolean behind = originsBehind(vertices, p1, p2, p3) == (ABOVE | BELOW);
         leftBehindOrigins |= behind;
         return behind;
     }

@@ -98,7 +98,7 @@ final class TransmittanceWalk {
         if (part < 0)
             return ray.attenuateBy(bodies.owner(b));
         TriangleMesh mesh = (TriangleMesh) bodies.owner(b);
-        double t = mesh.triangleHit(part, ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT);
+        double t = mesh.triangleHit(part, ray);
         return t == Geometry.NO_HIT || ray.attenuate(bodies.kT(mesh, part));
     }
 }

@@ -1,5 +1,6 @@
 package geometries;
 
+import accel.RayState;
 import accel.ShadowFrustum;
 import java.util.List;
 
@@ -65,30 +66,36 @@ public abstract class Geometry extends Intersectable {
         return this;
     }
 
-    // The fast path of the acceleration structure: a ray as raw doubles (origin o, unit direction d).
-    // Bodies on the hot path override these with code that allocates nothing; the defaults go
-    // through findGeoIntersections.
+    // The fast path of the acceleration structure: a ray's numbers in a RayState (origin o, unit
+    // direction d, the distance that counts). Bodies on the hot path override these with code that
+    // allocates nothing; the defaults go through findGeoIntersections.
 
     /**
-     * The distance to the nearest intersection ahead of a ray, within a limit.
+     * The distance to the nearest intersection ahead of a ray, within its distance.
      *
-     * @param ox   the ray's origin, x
-     * @param oy   the ray's origin, y
-     * @param oz   the ray's origin, z
-     * @param dx   the ray's unit direction, x
-     * @param dy   the ray's unit direction, y
-     * @param dz   the ray's unit direction, z
-     * @param maxT the largest distance that counts
+     * @param ray the ray: origin, unit direction and the largest distance that counts
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when there is none
      */
-    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        Point3D origin = new Point3D(ox, oy, oz);
-        List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(origin, new Vector(dx, dy, dz)), maxT);
+    public double nearestHit(RayState ray) {
+        Point3D origin = new Point3D(ray.ox(), ray.oy(), ray.oz());
+        List<GeoPoint> hits = findGeoIntersectionsHelper(toRay(ray), ray.maxT());
         double nearest = NO_HIT;
         if (hits != null)
             for (GeoPoint hit : hits)
                 nearest = Math.min(nearest, hit.point.distance(origin));
         return nearest;
+    }
+
+    /** {@return a ray's numbers as the course's {@link Ray}} */
+    static Ray toRay(RayState ray) {
+        return new Ray(new Point3D(ray.ox(), ray.oy(), ray.oz()), new Vector(ray.dx(), ray.dy(), ray.dz()));
+    }
+
+    /** {@return the numbers of a course {@link Ray} and a distance, for the fast path} */
+    static RayState toRayState(Ray ray, double maxDistance) {
+        Point3D p0 = ray.getP0();
+        Vector dir = ray.getDir();
+        return new RayState().set(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), maxDistance);
     }
 
     /**
@@ -121,9 +128,7 @@ public abstract class Geometry extends Intersectable {
      * @return the one intersection, or null
      */
     public final List<GeoPoint> singleHit(Ray ray, double maxDistance) {
-        Point3D p0 = ray.getP0();
-        Vector dir = ray.getDir();
-        double t = nearestHit(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), maxDistance);
+        double t = nearestHit(toRayState(ray, maxDistance));
         return t < NO_HIT ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
     }
 
@@ -162,42 +167,30 @@ public abstract class Geometry extends Intersectable {
     }
 
     /**
-     * The number of intersections ahead of a ray, within a limit.
+     * The number of intersections ahead of a ray, within its distance.
      *
-     * @param ox   the ray's origin, x
-     * @param oy   the ray's origin, y
-     * @param oz   the ray's origin, z
-     * @param dx   the ray's unit direction, x
-     * @param dy   the ray's unit direction, y
-     * @param dz   the ray's unit direction, z
-     * @param maxT the largest distance that counts
+     * @param ray the ray
      * @return the number of intersections at distances in (0, maxT]
      */
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        List<GeoPoint> hits = findGeoIntersectionsHelper(new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz)), maxT);
+    int hitCount(RayState ray) {
+        List<GeoPoint> hits = findGeoIntersectionsHelper(toRay(ray), ray.maxT());
         return hits == null ? 0 : hits.size();
     }
 
     /**
-     * The share of light that passes this body along a ray, within a limit: {@code kT} to the power
-     * of the number of intersections.
+     * The share of light that passes this body along a ray, within its distance: {@code kT} to the
+     * power of the number of intersections.
      *
-     * @param ox   the ray's origin, x
-     * @param oy   the ray's origin, y
-     * @param oz   the ray's origin, z
-     * @param dx   the ray's unit direction, x
-     * @param dy   the ray's unit direction, y
-     * @param dz   the ray's unit direction, z
-     * @param maxT the largest distance that counts
+     * @param ray the ray
      * @return the transparency factor in [0, 1]
      */
-    public final double transmittance(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        if (nearestHit(ox, oy, oz, dx, dy, dz, maxT) == NO_HIT) // most shadow rays miss: no material read
+    public final double transmittance(RayState ray) {
+        if (nearestHit(ray) == NO_HIT) // most shadow rays miss: no material read
             return 1;
         double kT = material.getKt();
         if (kT == 0) // opaque: blocked, no need to count the hits
             return 0;
-        int count = hitCount(ox, oy, oz, dx, dy, dz, maxT);
+        int count = hitCount(ray);
         return count == 1 ? kT : Math.pow(kT, count);
     }
 

@@ -1,5 +1,6 @@
 package geometries;
 
+import accel.RayState;
 import accel.ShadowFrustum;
 import java.util.List;
 
@@ -94,9 +95,10 @@ public class Plane extends Geometry {
     }
 
     @Override
-    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        double nv = alignZero(nx * dx + ny * dy + nz * dz);
-        double nq = nx * (qx - ox) + ny * (qy - oy) + nz * (qz - oz);
+    public double nearestHit(RayState ray) {
+        double maxT = ray.maxT();
+        double nv = alignZero(nx * ray.dx() + ny * ray.dy() + nz * ray.dz());
+        double nq = nx * (qx - ray.ox()) + ny * (qy - ray.oy()) + nz * (qz - ray.oz());
         // t = nq / nv lies in (0, maxT] only if nq has the sign of nv and |nq| <= maxT·|nv|: divide only then
         if (nv == 0 || (nv > 0 ? !(nq > 0 && nq <= maxT * nv) : !(nq < 0 && nq >= maxT * nv)))
             return NO_HIT;
@@ -104,8 +106,8 @@ public class Plane extends Geometry {
     }
 
     @Override
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 1 : 0;
+    int hitCount(RayState ray) {
+        return nearestHit(ray) < NO_HIT ? 1 : 0;
     }
 
     @Override

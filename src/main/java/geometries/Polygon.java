@@ -1,5 +1,6 @@
 package geometries;
 
+import accel.RayState;
 import accel.ShadowFrustum;
 import accel.BoundingVolumeHierarchy;
 import java.util.List;
@@ -172,36 +173,32 @@ public class Polygon extends Geometry {
      */
     @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        Point3D p0 = ray.getP0();
-        Vector dir = ray.getDir();
-        double t = hitInside(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), maxDistance,
-                EDGE_TOLERANCE * size);
+        double t = hitInside(toRayState(ray, maxDistance), EDGE_TOLERANCE * size);
         return t < NO_HIT ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
     }
 
     /** The renderer's path: the polygon is closed, so a ray through an edge or a vertex hits. */
     @Override
-    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        return hitInside(ox, oy, oz, dx, dy, dz, maxT, -EDGE_TOLERANCE * size);
+    public double nearestHit(RayState ray) {
+        return hitInside(ray, -EDGE_TOLERANCE * size);
     }
 
     /**
      * The distance to where a ray crosses the polygon's plane, if that point lies at least a margin
      * inside every edge.
      *
-     * @param maxT   the largest distance that counts
+     * @param ray    the ray
      * @param margin how far inside every edge's line the point must be: positive for the open polygon,
      *               negative for the closed one
      * @return the distance t in (0, maxT], or {@link #NO_HIT}
      */
-    private double hitInside(double ox, double oy, double oz, double dx, double dy, double dz, double maxT,
-                             double margin) {
-        double t = plane.nearestHit(ox, oy, oz, dx, dy, dz, maxT);
+    private double hitInside(RayState ray, double margin) {
+        double t = plane.nearestHit(ray);
         if (t == NO_HIT)
             return NO_HIT;
-        double px = ox + t * dx;
-        double py = oy + t * dy;
-        double pz = oz + t * dz;
+        double px = ray.ox() + t * ray.dx();
+        double py = ray.oy() + t * ray.dy();
+        double pz = ray.oz() + t * ray.dz();
         for (int i = 0; i < vertexCoordinates.length; i += 3) {
             double inside = (px - vertexCoordinates[i]) * edgeNormals[i]
                     + (py - vertexCoordinates[i + 1]) * edgeNormals[i + 1]
@@ -213,8 +210,8 @@ public class Polygon extends Geometry {
     }
 
     @Override
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        return nearestHit(ox, oy, oz, dx, dy, dz, maxT) < NO_HIT ? 1 : 0;
+    int hitCount(RayState ray) {
+        return nearestHit(ray) < NO_HIT ? 1 : 0;
     }
 
     /**

@@ -1,5 +1,7 @@
 package geometries;
 
+import accel.RayState;
+
 import java.util.List;
 
 import primitives.Point3D;
@@ -66,26 +68,23 @@ public class Sphere extends Geometry {
 
     @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        Point3D p0 = ray.getP0();
-        Vector dir = ray.getDir();
-        return hitsAt(ray, root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), -1),
-                root(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), 1), maxDistance);
+        RayState numbers = toRayState(ray, maxDistance);
+        return hitsAt(ray, root(numbers, -1), root(numbers, 1), maxDistance);
     }
 
     @Override
-    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        double t1 = root(ox, oy, oz, dx, dy, dz, -1);
+    public double nearestHit(RayState ray) {
+        double t1 = root(ray, -1);
         if (t1 > 0)
-            return hitWithin(t1, maxT);
+            return hitWithin(t1, ray.maxT());
         if (Double.isNaN(t1)) // the ray misses the sphere
             return NO_HIT;
-        return hitWithin(root(ox, oy, oz, dx, dy, dz, 1), maxT);
+        return hitWithin(root(ray, 1), ray.maxT());
     }
 
     @Override
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        return (within(root(ox, oy, oz, dx, dy, dz, -1), maxT) ? 1 : 0)
-                + (within(root(ox, oy, oz, dx, dy, dz, 1), maxT) ? 1 : 0);
+    int hitCount(RayState ray) {
+        return (within(root(ray, -1), ray.maxT()) ? 1 : 0) + (within(root(ray, 1), ray.maxT()) ? 1 : 0);
     }
 
     @Override
@@ -106,11 +105,11 @@ public class Sphere extends Geometry {
      * @param sign -1 for the nearer crossing, 1 for the farther
      * @return the distance (maybe negative), or NaN when the ray misses or only touches the sphere
      */
-    private double root(double ox, double oy, double oz, double dx, double dy, double dz, double sign) {
-        double ux = cx - ox;
-        double uy = cy - oy;
-        double uz = cz - oz;
-        double tm = ux * dx + uy * dy + uz * dz;
+    private double root(RayState ray, double sign) {
+        double ux = cx - ray.ox();
+        double uy = cy - ray.oy();
+        double uz = cz - ray.oz();
+        double tm = ux * ray.dx() + uy * ray.dy() + uz * ray.dz();
         double thSquared = alignZero(radiusSquared - (ux * ux + uy * uy + uz * uz - tm * tm));
         return thSquared <= 0 ? Double.NaN : alignZero(tm + sign * Math.sqrt(thSquared));
     }

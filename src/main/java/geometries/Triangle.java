@@ -1,5 +1,6 @@
 package geometries;
 
+import accel.RayState;
 import accel.ShadowFrustum;
 import primitives.Point3D;
 
@@ -16,11 +17,8 @@ public class Triangle extends Polygon {
     /** Tolerance on the barycentric coordinates, so that neighbours sharing an edge leave no seam. */
     public static final double BARYCENTRIC_TOLERANCE = 1e-9;
 
-    /**
-     * The data of the intersection test: the first vertex p1, the edges e1 = p2 − p1 and
-     * e2 = p3 − p1, and the |determinant| below which the ray is taken as parallel to the triangle.
-     */
-    private final double[] data;
+    /** The |determinant| of the intersection test below which a ray is taken as parallel to the triangle. */
+    private final double parallelLimit;
 
     /**
      * Creates a triangle.
@@ -32,16 +30,8 @@ public class Triangle extends Polygon {
      */
     public Triangle(Point3D p1, Point3D p2, Point3D p3) {
         super(p1, p2, p3);
-        double p1x = p1.getX();
-        double p1y = p1.getY();
-        double p1z = p1.getZ();
-        double e1x = p2.getX() - p1x;
-        double e1y = p2.getY() - p1y;
-        double e1z = p2.getZ() - p1z;
-        double e2x = p3.getX() - p1x;
-        double e2y = p3.getY() - p1y;
-        double e2z = p3.getZ() - p1z;
-        data = new double[] { p1x, p1y, p1z, e1x, e1y, e1z, e2x, e2y, e2z, parallelLimit(e1x, e1y, e1z, e2x, e2y, e2z) };
+        double[] v = vertexCoordinates;
+        parallelLimit = parallelLimit(v[3] - v[0], v[4] - v[1], v[5] - v[2], v[6] - v[0], v[7] - v[1], v[8] - v[2]);
     }
 
     /**
@@ -61,8 +51,8 @@ public class Triangle extends Polygon {
     }
 
     @Override
-    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        return intersect(data, 0, ox, oy, oz, dx, dy, dz, maxT);
+    public double nearestHit(RayState ray) {
+        return intersect(vertexCoordinates, 0, 3, 6, parallelLimit, ray);
     }
 
     /** The number of doubles {@link #project} writes. */
@@ -73,7 +63,7 @@ public class Triangle extends Polygon {
      * e2) of its foot, the point's signed distance from the plane and the plane's unit normal, in
      * that order.
      *
-     * @param data   a triangle's data (p1, e1 = p2 − p1, e2 = p3 − p1, ...), as {@link #intersect} takes them
+     * @param data   a triangle's data (p1, e1 = p2 − p1, e2 = p3 − p1, ...), as {@link TriangleMesh#triangleData} writes them
      * @param x      the point, x
      * @param y      the point, y
      * @param z      the point, z
@@ -108,58 +98,35 @@ public class Triangle extends Polygon {
     }
 
     /**
-     * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle whose data
-     * (p1, e1, e2 and the parallel limit, see the constructor) lie in an array.
+     * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle p1 p2 p3, its
+     * edges e1 = p2 − p1 and e2 = p3 − p1: closed, its edges and vertices hit within a barycentric
+     * tolerance. Every triangle of the renderer's path, a {@link Triangle} or one of a
+     * {@link TriangleMesh}, is tested here, on its vertices' own numbers, so the same triangle gets the
+     * same answer whoever holds it. It must stay under the JIT's size limit for inlining hot methods
+     * (325 bytes of bytecode), or every triangle test of the hierarchy becomes a call.
      *
-     * @param ox   the ray's origin, x
-     * @param oy   the ray's origin, y
-     * @param oz   the ray's origin, z
-     * @param dx   the ray's unit direction, x
-     * @param dy   the ray's unit direction, y
-     * @param dz   the ray's unit direction, z
-     * @param data   the array
-     * @param offset where the triangle's data start
-     * @param maxT   the largest distance that counts
-     * @return the distance t in (0, maxT], or {@link #NO_HIT} when the ray misses
-     */
-    public static double intersect(double[] data, int offset, double ox, double oy, double oz, double dx, double dy,
-                            double dz, double maxT) {
-        return intersect(data[offset], data[offset + 1], data[offset + 2], data[offset + 3], data[offset + 4],
-                data[offset + 5], data[offset + 6], data[offset + 7], data[offset + 8], data[offset + 9],
-                ox, oy, oz, dx, dy, dz, maxT);
-    }
-
-    /**
-     * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle given by its
-     * first vertex p1 and its edges e1 = p2 − p1 and e2 = p3 − p1: closed, its edges and vertices hit
-     * within a barycentric tolerance. Every triangle of the renderer's path, a {@link Triangle} or
-     * one of a {@link TriangleMesh}, is tested here. It must stay under the JIT's size limit for
-     * inlining hot methods (325 bytes of bytecode), or every triangle test of the hierarchy becomes a
-     * call.
-     *
-     * @param p1x           the first vertex p1, x
-     * @param p1y           the first vertex, y
-     * @param p1z           the first vertex, z
-     * @param e1x           the first edge p2 − p1, x
-     * @param e1y           the first edge, y
-     * @param e1z           the first edge, z
-     * @param e2x           the second edge p3 − p1, x
-     * @param e2y           the second edge, y
-     * @param e2z           the second edge, z
+     * @param vertices      the vertices' coordinates, three doubles each
+     * @param p1            where the first vertex's x lies in vertices
+     * @param p2            where the second vertex's x lies
+     * @param p3            where the third vertex's x lies
      * @param parallelLimit the |determinant| below which the ray is taken as parallel, see
      *                      {@link #parallelLimit}
-     * @param ox            the ray's origin, x
-     * @param oy            the ray's origin, y
-     * @param oz            the ray's origin, z
-     * @param dx            the ray's unit direction, x
-     * @param dy            the ray's unit direction, y
-     * @param dz            the ray's unit direction, z
-     * @param maxT          the largest distance that counts
+     * @param ray           the ray: origin, unit direction and the largest distance that counts
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when the ray misses
      */
-    public static double intersect(double p1x, double p1y, double p1z, double e1x, double e1y, double e1z, double e2x,
-                            double e2y, double e2z, double parallelLimit, double ox, double oy, double oz,
-                            double dx, double dy, double dz, double maxT) {
+    public static double intersect(double[] vertices, int p1, int p2, int p3, double parallelLimit, RayState ray) {
+        double p1x = vertices[p1];
+        double p1y = vertices[p1 + 1];
+        double p1z = vertices[p1 + 2];
+        double e1x = vertices[p2] - p1x;
+        double e1y = vertices[p2 + 1] - p1y;
+        double e1z = vertices[p2 + 2] - p1z;
+        double e2x = vertices[p3] - p1x;
+        double e2y = vertices[p3 + 1] - p1y;
+        double e2z = vertices[p3 + 2] - p1z;
+        double dx = ray.dx();
+        double dy = ray.dy();
+        double dz = ray.dz();
         double px = dy * e2z - dz * e2y;
         double py = dz * e2x - dx * e2z;
         double pz = dx * e2y - dy * e2x;
@@ -167,9 +134,9 @@ public class Triangle extends Polygon {
         if (Math.abs(det) < parallelLimit)
             return NO_HIT;
         double inv = 1.0 / det;
-        double tx = ox - p1x;
-        double ty = oy - p1y;
-        double tz = oz - p1z;
+        double tx = ray.ox() - p1x;
+        double ty = ray.oy() - p1y;
+        double tz = ray.oz() - p1z;
         double u = (tx * px + ty * py + tz * pz) * inv;
         if (u < -BARYCENTRIC_TOLERANCE || u > 1 + BARYCENTRIC_TOLERANCE)
             return NO_HIT;
@@ -179,7 +146,7 @@ public class Triangle extends Polygon {
         double v = (dx * qx + dy * qy + dz * qz) * inv;
         if (v < -BARYCENTRIC_TOLERANCE || u + v > 1 + BARYCENTRIC_TOLERANCE)
             return NO_HIT;
-        return hitWithin(alignZero((e2x * qx + e2y * qy + e2z * qz) * inv), maxT);
+        return hitWithin(alignZero((e2x * qx + e2y * qy + e2z * qz) * inv), ray.maxT());
     }
 
     /**

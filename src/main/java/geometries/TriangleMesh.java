@@ -31,6 +31,8 @@ import static primitives.Util.requireNonNull;
 public final class TriangleMesh extends Geometry {
     /** The number of doubles of a triangle's data for {@link #triangleData}. */
     public static final int TRIANGLE_DATA = 10;
+    /** The number of doubles of a triangle's test for {@link #triangleVertices}. */
+    public static final int TRIANGLE_VERTICES = 10;
     /** The tolerance, relative to a triangle's longest edge, of a point on it (see {@link #getNormal(Point3D)}). */
     private static final double ON_TRIANGLE_TOLERANCE = 1e-9;
 
@@ -345,18 +347,18 @@ public final class TriangleMesh extends Geometry {
 
     /** The renderer's path for the whole mesh (outside a hierarchy): the nearest closed triangle hit. */
     @Override
-    public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    public double nearestHit(RayState ray) {
         double nearest = NO_HIT;
         for (int t = 0; t < getTrianglesCount(); ++t)
-            nearest = Math.min(nearest, triangleHit(t, ox, oy, oz, dx, dy, dz, maxT));
+            nearest = Math.min(nearest, triangleHit(t, ray));
         return nearest;
     }
 
     @Override
-    int hitCount(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+    int hitCount(RayState ray) {
         int count = 0;
         for (int t = 0; t < getTrianglesCount(); ++t)
-            if (triangleHit(t, ox, oy, oz, dx, dy, dz, maxT) < NO_HIT)
+            if (triangleHit(t, ray) < NO_HIT)
                 ++count;
         return count;
     }
@@ -365,26 +367,12 @@ public final class TriangleMesh extends Geometry {
      * The renderer's test of one triangle: closed, the test of its {@link Triangle}
      * ({@link Triangle#intersect}) on the same numbers.
      *
-     * @param t    the triangle's index
-     * @param ox   the ray's origin, x
-     * @param oy   the ray's origin, y
-     * @param oz   the ray's origin, z
-     * @param dx   the ray's unit direction, x
-     * @param dy   the ray's unit direction, y
-     * @param dz   the ray's unit direction, z
-     * @param maxT the largest distance that counts
+     * @param t   the triangle's index
+     * @param ray the ray: origin, unit direction and the largest distance that counts
      * @return the distance in (0, maxT], or {@link #NO_HIT}
      */
-    public double triangleHit(int t, double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
-        int a = corner(t, 0);
-        int b = corner(t, 1);
-        int c = corner(t, 2);
-        double p1x = vertices[a];
-        double p1y = vertices[a + 1];
-        double p1z = vertices[a + 2];
-        return Triangle.intersect(p1x, p1y, p1z, vertices[b] - p1x, vertices[b + 1] - p1y, vertices[b + 2] - p1z,
-                vertices[c] - p1x, vertices[c + 1] - p1y, vertices[c + 2] - p1z, parallelLimits[t],
-                ox, oy, oz, dx, dy, dz, maxT);
+    public double triangleHit(int t, RayState ray) {
+        return Triangle.intersect(vertices, corner(t, 0), corner(t, 1), corner(t, 2), parallelLimits[t], ray);
     }
 
     /**
@@ -429,10 +417,22 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
-     * Writes the data of triangle t's test into an array, as a {@link Triangle} keeps them: the first
-     * vertex p1, the edges p2 − p1 and p3 − p1, and the parallel limit, so that
-     * {@link Triangle#intersect(double[], int, double, double, double, double, double, double, double)}
-     * on them gives exactly {@link #triangleHit}.
+     * Writes the numbers of triangle t's test into an array: its three vertices and its parallel limit,
+     * so that {@link Triangle#intersect} on them gives exactly {@link #triangleHit}.
+     *
+     * @param t      the triangle's index
+     * @param target the array
+     * @param offset where the {@value #TRIANGLE_VERTICES} numbers go: p1, p2, p3, then the limit
+     */
+    public void triangleVertices(int t, double[] target, int offset) {
+        for (int k = 0; k < 3; ++k)
+            System.arraycopy(vertices, corner(t, k), target, offset + 3 * k, 3);
+        target[offset + 9] = parallelLimits[t];
+    }
+
+    /**
+     * Writes the data of triangle t into an array: the first vertex p1, the edges p2 − p1 and p3 − p1
+     * (as {@link Triangle#project} takes them), and the parallel limit.
      *
      * @param t      the triangle's index
      * @param target the array
@@ -468,17 +468,16 @@ public final class TriangleMesh extends Geometry {
 
     /**
      * The hit at a distance along a ray: on a given triangle, or when the hit was found on the whole
-     * mesh ({@link #nearestHit(double, double, double, double, double, double, double)}), on the first
+     * mesh ({@link #nearestHit(RayState)}), on the first
      * triangle the ray hits at that distance.
      */
     @Override
     public GeoPoint hitPoint(Ray ray, double t, int part) {
         int triangle = part;
         if (triangle < 0) {
-            Point3D p0 = ray.getP0();
-            Vector dir = ray.getDir();
+            RayState numbers = toRayState(ray, t);
             triangle = 0;
-            while (triangleHit(triangle, p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(), t) != t)
+            while (triangleHit(triangle, numbers) != t)
                 ++triangle;
         }
         return new MeshPoint(this, triangle, ray.getPoint(t));

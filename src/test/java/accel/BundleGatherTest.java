@@ -23,6 +23,7 @@ import static testutil.TestBundles.gathered;
 import static testutil.TestBundles.gatheredRay;
 import static testutil.TestBundles.pointOnTriangle;
 import static testutil.TestBundles.rayFromTo;
+import static testutil.TestBundles.rayState;
 import static testutil.TestBundles.rayTransmittance;
 import static testutil.TestBundles.shadowRays;
 import static testutil.TestBundles.squarePoint;
@@ -34,6 +35,7 @@ import static testutil.TestScenes.meshScene;
 import static testutil.TestScenes.perpendicular;
 import static testutil.TestScenes.randomScene;
 import static testutil.TestScenes.setKt;
+import static testutil.TestScenes.triangle;
 
 import java.util.List;
 import java.util.Random;
@@ -506,11 +508,7 @@ class BundleGatherTest {
             double[] along = rayFromTo(p, c);
             // the left-out triangle that the ray from p along the surface hits: the slope up, at x = 2.5
             double[] slope = ridge.get(4);
-            assertTrue(Triangle.intersect(slope[0], slope[1], slope[2], slope[3] - slope[0], slope[4] - slope[1],
-                    slope[5] - slope[2], slope[6] - slope[0], slope[7] - slope[1], slope[8] - slope[2],
-                    Triangle.parallelLimit(slope[3] - slope[0], slope[4] - slope[1], slope[5] - slope[2],
-                            slope[6] - slope[0], slope[7] - slope[1], slope[8] - slope[2]), along[0], along[1],
-                    along[2], along[3], along[4], along[5], along[6]) < Geometry.NO_HIT,
+            assertTrue(triangle(slope).nearestHit(rayState(along)) < Geometry.NO_HIT,
                     kind + ": the ray along the surface must hit the left-out slope");
 
             // ===== Equivalence Partitions Tests =====
@@ -583,9 +581,7 @@ class BundleGatherTest {
             // (expects kept)
             for (int t = 2; t < shelves.size(); ++t) {
                 double[] v = shelves.get(t);
-                double[] data = { v[0], v[1], v[2], v[3] - v[0], v[4] - v[1], v[5] - v[2], v[6] - v[0], v[7] - v[1],
-                        v[8] - v[2] };
-                assertEquals(v[2] > 0 ? ShadowFrustum.BELOW : ShadowFrustum.ABOVE, frustum.originsBehind(data, 0),
+                assertEquals(v[2] > 0 ? ShadowFrustum.BELOW : ShadowFrustum.ABOVE, frustum.originsBehind(v, 0, 3, 6),
                         "TC02: " + kind + ": shelf triangle " + t + " behind one start");
                 assertFalse(frustum.behindOrigins(v, 0, 3, 6), "TC02: " + kind + ": shelf " + t + " not behind both");
                 assertTrue(surface.mayMeet(t, frustum), "TC02: " + kind + ": shelf " + t + " must be kept");

@@ -16,6 +16,7 @@ import static testutil.TestBundles.gatheredRay;
 import static testutil.TestBundles.meeting;
 import static testutil.TestBundles.pointOnTriangle;
 import static testutil.TestBundles.randomHalfSide;
+import static testutil.TestBundles.rayState;
 import static testutil.TestBundles.rayTransmittance;
 import static testutil.TestBundles.shadowRays;
 import static testutil.TestBundles.squarePoint;
@@ -25,6 +26,7 @@ import static testutil.TestRandom.randomUnit;
 import static testutil.TestScenes.perpendicular;
 import static testutil.TestScenes.pointIn;
 import static testutil.TestScenes.pointOn;
+import static testutil.TestScenes.triangle;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -326,21 +328,20 @@ final class BvhFixtures {
         // the mesh's triangles the gather kept (box and own test), and the rays that skip them
         boolean skipping = false;
         double[] box = new double[6];
-        double[] data = new double[TriangleMesh.TRIANGLE_DATA];
+        double[] numbers = new double[TriangleMesh.TRIANGLE_VERTICES];
         for (int k = 0; k < mesh.getTrianglesCount(); ++k) {
             mesh.bounds(k, box, 0);
             if (!frustum.meetsBox(box, 0) || !mesh.mayMeet(k, frustum))
                 continue;
-            mesh.triangleData(k, data, 0);
-            int behind = frustum.originsBehind(data, 0);
+            mesh.triangleVertices(k, numbers, 0);
+            int behind = frustum.originsBehind(numbers, 0, 3, 6);
             for (double[] ray : rays)
                 if ((frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]) & behind) != 0) {
                     ++counts.skipped;
                     skipping = true;
                     int triangle = k;
-                    assertEquals(Geometry.NO_HIT, Triangle.intersect(data, 0, ray[0], ray[1], ray[2], ray[3], ray[4],
-                            ray[5], ray[6]), 0, () -> bundleLabel + ": triangle " + triangle + " skipped by the ray "
-                            + Arrays.toString(ray) + " is hit by it");
+                    assertEquals(Geometry.NO_HIT, mesh.triangleHit(k, rayState(ray)), 0, () -> bundleLabel
+                            + ": triangle " + triangle + " skipped by the ray " + Arrays.toString(ray) + " is hit by it");
                 }
         }
         if (skipping && gathered[0] == 0)
@@ -395,8 +396,7 @@ final class BvhFixtures {
             }
             List<Triangle> triangles = new ArrayList<>();
             for (double[] v : vertices) {
-                Triangle triangle = new Triangle(new Point3D(v[0], v[1], v[2]), new Point3D(v[3], v[4], v[5]),
-                        new Point3D(v[6], v[7], v[8]));
+                Triangle triangle = triangle(v);
                 triangle.setMaterial(material);
                 triangles.add(triangle);
             }

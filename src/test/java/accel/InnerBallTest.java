@@ -374,8 +374,8 @@ class InnerBallTest {
                 Vector d = to.subtract(from);
                 double length = d.length();
                 d = d.normalize();
-                assertTrue(mesh.nearestHit(from.getX(), from.getY(), from.getZ(), d.getX(), d.getY(), d.getZ(), length)
-                        < Geometry.NO_HIT, () -> (surface ? "TC11: " : "TC01: ") + meshLabel + ": the segment from "
+                assertTrue(mesh.nearestHit(new RayState().set(from.getX(), from.getY(), from.getZ(), d.getX(),
+                        d.getY(), d.getZ(), length)) < Geometry.NO_HIT, () -> (surface ? "TC11: " : "TC01: ") + meshLabel + ": the segment from "
                         + from + " to " + to + " must hit the mesh");
             }
         }

@@ -132,7 +132,7 @@ class PackedTrianglesTest {
         }
 
         @Override
-        public double nearestHit(double ox, double oy, double oz, double dx, double dy, double dz, double maxT) {
+        public double nearestHit(RayState ray) {
             return NO_HIT;
         }
     }

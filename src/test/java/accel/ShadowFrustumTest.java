@@ -11,6 +11,7 @@ import static testutil.TestBundles.raySegment;
 import static testutil.TestBundles.segmentPoint;
 import static testutil.TestBundles.setPyramid;
 import static testutil.TestBundles.strayVector;
+import static testutil.TestScenes.triangle;
 
 import java.util.Arrays;
 import java.util.Random;
@@ -327,10 +328,8 @@ class ShadowFrustumTest {
         // about 2e-4 here, so the ray from the apex to the base's edge point (2, 0, 10) hits it at
         // (1, 0, 5): true
         double[] huge = { 1 + 1e-4 * len, 0, 5, 1e5, -1e5, 5, 1e5, 1e5, 5 };
-        double t = Triangle.intersect(huge[0], huge[1], huge[2], huge[3] - huge[0], huge[4] - huge[1],
-                huge[5] - huge[2],
-                huge[6] - huge[0], huge[7] - huge[1], huge[8] - huge[2], 0, 0, 0, 0, 2 / Math.sqrt(104), 0,
-                10 / Math.sqrt(104), Math.sqrt(104));
+        double t = triangle(huge).nearestHit(new RayState().set(0, 0, 0, 2 / Math.sqrt(104), 0, 10 / Math.sqrt(104),
+                Math.sqrt(104)));
         assertTrue(t < Geometry.NO_HIT, "TC14: the ray along the side must hit the grown triangle");
         assertTrue(meetsTriangle(frustum, huge), "TC14: a triangle grown into the pyramid must be met");
         // TC15: a triangle whose vertex touches the apex from behind: true
@@ -557,13 +556,9 @@ class ShadowFrustumTest {
      * @return {@link ShadowFrustum#originsBehind} of p1, p2 − p1, p3 − p1
      */
     private static int originsBehind(ShadowFrustum frustum, double... v) {
-        double[] data = new double[12];
-        for (int k = 0; k < 3; ++k) {
-            data[3 + k] = v[k];
-            data[6 + k] = v[3 + k] - v[k];
-            data[9 + k] = v[6 + k] - v[k];
-        }
-        return frustum.originsBehind(data, 3);
+        double[] shifted = new double[12];
+        System.arraycopy(v, 0, shifted, 3, 9);
+        return frustum.originsBehind(shifted, 3, 6, 9);
     }
 
     /**
@@ -1071,15 +1066,8 @@ class ShadowFrustumTest {
         double dy = segment[4] - segment[1];
         double dz = segment[5] - segment[2];
         double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        double e1x = v[3] - v[0];
-        double e1y = v[4] - v[1];
-        double e1z = v[5] - v[2];
-        double e2x = v[6] - v[0];
-        double e2y = v[7] - v[1];
-        double e2z = v[8] - v[2];
-        return length > 0 && Triangle.intersect(v[0], v[1], v[2], e1x, e1y, e1z, e2x, e2y, e2z,
-                Triangle.parallelLimit(e1x, e1y, e1z, e2x, e2y, e2z), segment[0], segment[1], segment[2],
-                dx / length, dy / length, dz / length, length) < Geometry.NO_HIT;
+        return length > 0 && triangle(v).nearestHit(new RayState().set(segment[0], segment[1], segment[2],
+                dx / length, dy / length, dz / length, length)) < Geometry.NO_HIT;
     }
 
     /**

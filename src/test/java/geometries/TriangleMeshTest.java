@@ -17,6 +17,8 @@ import static testutil.TestAssertions.assertNearestFirst;
 import static testutil.TestAssertions.assertNearestFirstThrough;
 import static testutil.TestRandom.randomPoint;
 import static testutil.TestRandom.rayThrough;
+import static testutil.TestBundles.rayFromTo;
+import static testutil.TestBundles.rayState;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -27,6 +29,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.function.Executable;
 
 import accel.Query;
+import accel.RayState;
 import geometries.Intersectable.GeoPoint;
 import geometries.TriangleMesh.MeshPoint;
 import lighting.PointLight;
@@ -332,15 +335,75 @@ class TriangleMeshTest {
     }
 
     /**
-     * Test method for {@link TriangleMesh#triangleData}: a triangle's data for testing it on many rays
-     * is its first vertex, its two edges from it and its parallel limit, the numbers its own test uses.
+     * Test method for {@link TriangleMesh#triangleVertices} and {@link TriangleMesh#triangleHit}: a
+     * triangle's numbers for testing it on many rays are its vertices and its parallel limit, and the
+     * test on them is the one of the mesh and of a {@link Triangle} of the same vertices, to the bit.
+     */
+    @Test
+    void testTriangleVertices() {
+        TriangleMesh mesh = benchmark.SphereMesh.mesh(new Point3D(1, -2, 3), 5, 6, 8);
+        double[] numbers = new double[TriangleMesh.TRIANGLE_VERTICES + 1];
+        numbers[TriangleMesh.TRIANGLE_VERTICES] = -7;
+        double[] data = new double[TriangleMesh.TRIANGLE_DATA];
+        Random rnd = new Random(1610);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: every triangle: its three vertices in order, then the parallel limit of triangleData
+        for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
+            mesh.triangleVertices(t, numbers, 0);
+            mesh.triangleData(t, data, 0);
+            for (int k = 0; k < 3; ++k) {
+                Point3D p = mesh.getVertex(mesh.getVertexIndex(t, k));
+                assertEquals(p.getX(), numbers[3 * k], 0, "TC01: triangle " + t + ", vertex " + k + ", x");
+                assertEquals(p.getY(), numbers[3 * k + 1], 0, "TC01: triangle " + t + ", vertex " + k + ", y");
+                assertEquals(p.getZ(), numbers[3 * k + 2], 0, "TC01: triangle " + t + ", vertex " + k + ", z");
+            }
+            assertEquals(data[9], numbers[9], 0, "TC01: triangle " + t + ", the parallel limit");
+        }
+        // TC02: 500 random rays at points in and around random triangles: the Möller–Trumbore test on
+        // the numbers, the mesh's triangleHit and the Triangle's nearestHit agree to the bit, hit or miss
+        int hits = 0;
+        for (int r = 0; r < 500; ++r) {
+            int t = rnd.nextInt(mesh.getTrianglesCount());
+            mesh.triangleData(t, data, 0);
+            mesh.triangleVertices(t, numbers, 0);
+            double u = 1.4 * rnd.nextDouble() - 0.2;
+            double v = 1.4 * rnd.nextDouble() - 0.2;
+            Point3D target = new Point3D(data[0] + u * data[3] + v * data[6], data[1] + u * data[4] + v * data[7],
+                    data[2] + u * data[5] + v * data[8]);
+            Point3D o = randomPoint(rnd, new Point3D(1, -2, 3), 12);
+            RayState ray = rayState(rayFromTo(o, target));
+            ray.set(ray.ox(), ray.oy(), ray.oz(), ray.dx(), ray.dy(), ray.dz(), 30 * rnd.nextDouble());
+            double expected = mesh.triangleHit(t, ray);
+            assertEquals(expected, Triangle.intersect(numbers, 0, 3, 6, numbers[9], ray), 0,
+                    "TC02: ray " + r + " at triangle " + t + ", on its numbers");
+            Triangle own = new Triangle(mesh.getVertex(mesh.getVertexIndex(t, 0)),
+                    mesh.getVertex(mesh.getVertexIndex(t, 1)), mesh.getVertex(mesh.getVertexIndex(t, 2)));
+            assertEquals(expected, own.nearestHit(ray), 0, "TC02: ray " + r + " at triangle " + t + ", as a Triangle");
+            if (expected < Geometry.NO_HIT)
+                ++hits;
+        }
+        assertTrue(hits > 50 && hits < 450, "TC02: too few hits or misses (" + hits + " hits)");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the array's number past the test's numbers is left as it was (−7)
+        assertEquals(-7, numbers[TriangleMesh.TRIANGLE_VERTICES], 0, "TC11: a number past them must be left alone");
+        // TC12: written at an offset: the same numbers there
+        double[] two = new double[2 * TriangleMesh.TRIANGLE_VERTICES];
+        mesh.triangleVertices(5, two, TriangleMesh.TRIANGLE_VERTICES);
+        mesh.triangleVertices(5, numbers, 0);
+        for (int k = 0; k < TriangleMesh.TRIANGLE_VERTICES; ++k)
+            assertEquals(numbers[k], two[TriangleMesh.TRIANGLE_VERTICES + k], 0, "TC12: number " + k + " at the offset");
+    }
+
+    /**
+     * Test method for {@link TriangleMesh#triangleData}: a triangle's data for the geometric queries
+     * ({@link Triangle#project}) is its first vertex, its two edges from it and its parallel limit.
      */
     @Test
     void testTriangleData() {
         TriangleMesh mesh = benchmark.SphereMesh.mesh(new Point3D(1, -2, 3), 5, 6, 8);
         double[] data = new double[TriangleMesh.TRIANGLE_DATA + 1];
         data[TriangleMesh.TRIANGLE_DATA] = -7;
-        Random rnd = new Random(1610);
         // ===== Equivalence Partitions Tests =====
         // TC01: every triangle: p1 its first vertex, e1 = p2 − p1, e2 = p3 − p1, and the Triangle's
         // parallel limit of those edges
@@ -355,26 +418,6 @@ class TriangleMeshTest {
             for (int k = 0; k < expected.length; ++k)
                 assertEquals(expected[k], data[k], 0, "TC01: triangle " + t + ", number " + k);
         }
-        // TC02: 500 random rays at points in and around random triangles: the Möller–Trumbore test on
-        // the data gives the triangle's own distance, to the bit, hit or miss
-        int hits = 0;
-        for (int r = 0; r < 500; ++r) {
-            int t = rnd.nextInt(mesh.getTrianglesCount());
-            mesh.triangleData(t, data, 0);
-            double u = 1.4 * rnd.nextDouble() - 0.2;
-            double v = 1.4 * rnd.nextDouble() - 0.2;
-            Point3D target = new Point3D(data[0] + u * data[3] + v * data[6], data[1] + u * data[4] + v * data[7],
-                    data[2] + u * data[5] + v * data[8]);
-            Point3D o = randomPoint(rnd, new Point3D(1, -2, 3), 12);
-            Vector d = target.subtract(o).normalize();
-            double maxT = 30 * rnd.nextDouble();
-            double expected = mesh.triangleHit(t, o.getX(), o.getY(), o.getZ(), d.getX(), d.getY(), d.getZ(), maxT);
-            assertEquals(expected, Triangle.intersect(data, 0, o.getX(), o.getY(), o.getZ(), d.getX(), d.getY(),
-                    d.getZ(), maxT), 0, "TC02: ray " + r + " at triangle " + t);
-            if (expected < Geometry.NO_HIT)
-                ++hits;
-        }
-        assertTrue(hits > 50 && hits < 450, "TC02: too few hits or misses (" + hits + " hits)");
 
         // ===== Boundary Values Tests =====
         // TC11: the array's numbers past the data are left as they were (−7)

@@ -371,9 +371,7 @@ class TriangleTest {
      * @return the distance, or {@link Geometry#NO_HIT}
      */
     private static double nearestHit(Geometry body, Ray ray) {
-        Point3D p = ray.getP0();
-        Vector d = ray.getDir();
-        return body.nearestHit(p.getX(), p.getY(), p.getZ(), d.getX(), d.getY(), d.getZ(), Double.POSITIVE_INFINITY);
+        return body.nearestHit(Geometry.toRayState(ray, Double.POSITIVE_INFINITY));
     }
 
     /**

@@ -15,6 +15,7 @@ import java.util.function.Supplier;
 
 import accel.BoundingVolumeHierarchy;
 import accel.Query;
+import accel.RayState;
 import accel.ShadowFrustum;
 import geometries.Geometries;
 import geometries.Geometry;
@@ -340,6 +341,16 @@ public final class TestBundles {
         mesh.triangleData(t, data, 0);
         return new Point3D(data[0] + u * data[3] + v * data[6], data[1] + u * data[4] + v * data[7],
                 data[2] + u * data[5] + v * data[8]);
+    }
+
+    /**
+     * A ray's numbers for the bodies' tests.
+     *
+     * @param ray {ox, oy, oz, dx, dy, dz, distance}, as {@link #rayFromTo} gives it
+     * @return the ray as a {@link RayState}
+     */
+    public static RayState rayState(double[] ray) {
+        return new RayState().set(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]);
     }
 
     /**

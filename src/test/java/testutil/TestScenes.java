@@ -81,6 +81,16 @@ public final class TestScenes {
     }
 
     /**
+     * A triangle of nine coordinates.
+     *
+     * @param v the vertices p1, p2, p3, three coordinates each
+     * @return the triangle
+     */
+    public static Triangle triangle(double[] v) {
+        return new Triangle(new Point3D(v[0], v[1], v[2]), new Point3D(v[3], v[4], v[5]), new Point3D(v[6], v[7], v[8]));
+    }
+
+    /**
      * A random triangle: its vertices lie in a small cube around a random point.
      *
      * @param rnd     the generator
