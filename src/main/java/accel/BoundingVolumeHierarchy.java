@@ -39,9 +39,9 @@ import static primitives.Util.requireNonNull;
  * their smallest subtree when they are many ({@link BundleGather}); {@link #bundleRayTransmittance}
  * then tests a ray against those alone, and {@link #packetTransmittances} all the rays of the bundle
  * at once, walking a kept subtree as one packet ({@link PacketWalk}). A closed opaque mesh whose
- * inner ball ({@link InnerBall}) lies across every ray of a bundle blocks the whole bundle at the
- * gather ({@link #blocksBundle}), and a packet's ray through such a ball is blocked before the walk
- * ({@link ClosedMeshBlockers}).
+ * core, its inner ball ({@link InnerBall}) or one of its inner boxes ({@link InnerBoxes}), lies across
+ * every ray of a bundle blocks the whole bundle at the gather ({@link #blocksBundle}), and a packet's
+ * ray through such a core is blocked before the walk ({@link ClosedMeshBlockers}).
  * <p>
  * Queries take a {@link Query}, the caller's per-thread scratch space, and allocate nothing but
  * the {@link GeoPoint} a closest-hit query returns.
@@ -205,8 +205,8 @@ public final class BoundingVolumeHierarchy {
      * <p>
      * Once the first body is gathered, the tree's closed opaque meshes are tried: when one lies across
      * every ray of the bundle, the gather stops, and the bundle is blocked ({@link #blocksBundle});
-     * otherwise those whose inner balls the pyramid meets are kept, and a ray of the packet through
-     * one of those balls is answered at once ({@link #packetTransmittances}).
+     * otherwise those whose boxes the pyramid meets are kept, and a ray of the packet through one of
+     * their cores is answered at once ({@link #packetTransmittances}).
      *
      * @param query this thread's scratch space, its frustum set to the bundle's pyramid
      * @return false when no ray of the bundle can meet anything: then no ray needs to be tested (never
@@ -218,8 +218,8 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Whether the last {@link #gather} found a closed opaque mesh that blocks every ray of its bundle:
-     * every ray passes through the mesh's inner ball on its way to a base outside the mesh's box
-     * ({@link ShadowFrustum#crossesClosedMesh}), so each crosses the mesh's surface, and each ray's
+     * every ray passes through the mesh's inner ball or one of its inner boxes on its way to a base
+     * outside the mesh's box ({@link CoreCrossing}), so each crosses the mesh's surface, and each ray's
      * transparency is 0, as {@link #bundleRayTransmittance} (which then answers 0) would find one ray
      * at a time. A point in a body's umbra needs no ray traced. A brute-force {@link #scan} has no
      * such meshes.

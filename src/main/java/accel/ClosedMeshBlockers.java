@@ -11,16 +11,17 @@ import java.util.List;
 import primitives.Parallel;
 
 /**
- * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part whose inner ball
- * ({@link InnerBall}) lies across every ray of a bundle blocks the bundle at the gather, and a
- * packet's ray through such a ball is blocked before the walk.
+ * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part whose core, its
+ * inner ball ({@link InnerBall}) or one of its inner boxes ({@link InnerBoxes}), lies across every ray
+ * of a bundle blocks the bundle at the gather ({@link CoreCrossing}), and a packet's ray through such
+ * a core is blocked before the walk.
  */
 final class ClosedMeshBlockers {
-    /** The most closed meshes whose inner balls the gather tries: those of the largest balls. */
+    /** The most closed meshes whose cores the gather tries: those of the largest cores. */
     static final int MAX_BLOCKERS = 16;
 
     /**
-     * The closed parts that have an inner ball, the largest balls first: of the tree's meshes
+     * The closed parts that have a core, the largest cores first: of the tree's meshes
      * ({@link ClosedParts}), its course-style {@link Triangle} objects among them ({@link PackedTriangles}).
      */
     private final Blocker[] blockers;
@@ -29,9 +30,9 @@ final class ClosedMeshBlockers {
 
     /**
      * A closed part: its mesh (whose material says whether it is opaque), or null for packed
-     * triangles, then the triangles; its ball and its box.
+     * triangles, then the triangles; and the part, with its cores and its box.
      */
-    private record Blocker(TriangleMesh mesh, Triangle[] triangles, InnerBall ball, double[] box) {
+    private record Blocker(TriangleMesh mesh, Triangle[] triangles, ClosedParts.Part part) {
     }
 
     /**
@@ -51,9 +52,9 @@ final class ClosedMeshBlockers {
                 boolean isPacked = packed != null && packed.isMesh(mesh);
                 Triangle[] triangles = isPacked ? Arrays.stream(part.triangles()).mapToObj(t -> packed.triangles[t])
                         .toArray(Triangle[]::new) : null;
-                found.add(new Blocker(isPacked ? null : mesh, triangles, part.ball(), part.box()));
+                found.add(new Blocker(isPacked ? null : mesh, triangles, part));
             }
-        this.blockers = found.stream().sorted(Comparator.comparingDouble((Blocker blocker) -> blocker.ball.radius)
+        this.blockers = found.stream().sorted(Comparator.comparingDouble((Blocker blocker) -> blocker.part.coreSize())
                 .reversed()).limit(MAX_BLOCKERS).toArray(Blocker[]::new);
         this.opaque = new boolean[blockers.length];
         readMaterials();
@@ -76,9 +77,8 @@ final class ClosedMeshBlockers {
     }
 
     /**
-     * Tries the closed opaque meshes on the query's bundle: keeps those whose inner balls the pyramid
-     * meets, its base outside their boxes, unless one lies across every ray (the bundle is then
-     * blocked).
+     * Tries the closed opaque meshes on the query's bundle: keeps those whose boxes the pyramid meets,
+     * its base outside them, unless the core of one lies across every ray (the bundle is then blocked).
      *
      * @param query this thread's scratch space, its frustum set
      * @return true when one lies across every ray of the bundle
@@ -88,40 +88,69 @@ final class ClosedMeshBlockers {
         ShadowFrustum frustum = query.frustum;
         int count = 0;
         for (int s = 0; s < blockers.length; ++s) {
-            InnerBall ball = blockers[s].ball;
-            double[] box = blockers[s].box;
-            if (!isOpaque(s) || !frustum.meetsBox(ball.box(), 0))
+            ClosedParts.Part part = blockers[s].part;
+            if (!isOpaque(s) || !frustum.meetsBox(part.box(), 0) || !CoreCrossing.baseOutside(frustum, part.box(), 0))
                 continue;
-            if (frustum.crossesClosedMesh(ball, box, 0)) {
+            if (crossesCore(frustum, part)) {
                 query.blocked = true;
                 return true;
             }
-            if (frustum.baseOutside(box, 0))
-                query.blockerList[count++] = s;
+            query.blockerList[count++] = s;
         }
         query.blockerCount = count;
         return false;
     }
 
+    /** Whether every ray of the pyramid passes through the part's inner ball or one of its inner boxes. */
+    private static boolean crossesCore(ShadowFrustum frustum, ClosedParts.Part part) {
+        if (part.ball() != null && CoreCrossing.sectionInside(frustum, part.ball()))
+            return true;
+        double[] inner = part.innerBoxes();
+        for (int b = 0; b < inner.length; b += 6)
+            if (CoreCrossing.crossesBox(frustum, inner, b))
+                return true;
+        return false;
+    }
+
     /**
-     * Answers 0 for each unblocked ray of the packet that passes through the ball of a closed mesh
-     * the gather kept: it crosses that closed opaque mesh.
+     * Answers 0 for each unblocked ray of the packet, {@link RayState#invert inverted}, that passes
+     * through a core of a closed mesh the gather kept (one the pyramid meets): it crosses that closed
+     * opaque mesh.
      *
      * @param query this thread's scratch space, as the last gather left it, its packet filled
      * @return the number of rays so blocked
      */
     int blockPacket(Query query) {
-        RayState[] rays = query.packet.rays;
-        int size = query.packet.size;
         int blocked = 0;
         for (int k = 0; k < query.blockerCount; ++k) {
-            InnerBall ball = blockers[query.blockerList[k]].ball;
-            for (int r = 0; r < size; ++r) {
-                RayState ray = rays[r];
-                if (ray.ktr > 0 && ball.crossedBy(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT)) {
-                    ray.ktr = 0;
-                    ++blocked;
-                }
+            ClosedParts.Part part = blockers[query.blockerList[k]].part;
+            InnerBall ball = part.ball();
+            if (ball != null && query.frustum.meetsBox(ball.box(), 0))
+                blocked += blockThrough(query.packet, ball, null, 0);
+            double[] inner = part.innerBoxes();
+            for (int b = 0; b < inner.length; b += 6)
+                if (query.frustum.meetsBox(inner, b))
+                    blocked += blockThrough(query.packet, null, inner, b);
+        }
+        return blocked;
+    }
+
+    /**
+     * Answers 0 for each unblocked ray of the packet through a ball, or else through a box.
+     *
+     * @param ball  the ball, or null for the box
+     * @param boxes the boxes, {minX, minY, minZ, maxX, maxY, maxZ} each
+     * @param b     where the box lies in them
+     * @return the number of rays so blocked
+     */
+    private static int blockThrough(Packet packet, InnerBall ball, double[] boxes, int b) {
+        int blocked = 0;
+        for (int r = 0; r < packet.size; ++r) {
+            RayState ray = packet.rays[r];
+            if (ray.ktr > 0 && (ball != null ? ball.crossedBy(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT)
+                    : ray.boxEntry(boxes, b, ray.maxT) != RayState.MISSED)) {
+                ray.ktr = 0;
+                ++blocked;
             }
         }
         return blocked;

@@ -25,17 +25,27 @@ import primitives.Point3D;
 final class ClosedParts {
     /** The fewest triangles a closed part has: a tetrahedron's. */
     private static final int MIN_TRIANGLES = 4;
-    /** Each mesh's closed parts with an inner ball, found on the first {@link #of} (weak keys: no leak). */
+    /** Each mesh's closed parts with a core, found on the first {@link #of} (weak keys: no leak). */
     private static final Map<TriangleMesh, List<Part>> FOUND = Collections.synchronizedMap(new WeakHashMap<>());
 
     /**
-     * A closed part of a mesh: its triangles, its ball and the box around its triangles.
+     * A closed part of a mesh: its triangles, its cores (an inner ball, inner boxes) and the box
+     * around its triangles.
      *
-     * @param triangles the part's triangles in the mesh, in order
-     * @param ball      the part's inner ball
-     * @param box       the box around the part's triangles, as {@link TriangleMesh#bounds(double[], int)} writes it
+     * @param triangles  the part's triangles in the mesh, in order
+     * @param ball       the part's inner ball, or null when none was found
+     * @param box        the box around the part's triangles, as {@link TriangleMesh#bounds(double[], int)} writes it
+     * @param innerBoxes the part's inner boxes ({@link InnerBoxes}), six numbers each, maybe none
      */
-    record Part(int[] triangles, InnerBall ball, double[] box) {
+    record Part(int[] triangles, InnerBall ball, double[] box, double[] innerBoxes) {
+        /** {@return the size of the part's largest core: its ball's radius, or half the shortest side of its largest box} */
+        double coreSize() {
+            double size = ball == null ? 0 : ball.radius;
+            for (int b = 0; b < innerBoxes.length; b += 6)
+                size = Math.max(size, Math.min(innerBoxes[b + 3] - innerBoxes[b],
+                        Math.min(innerBoxes[b + 4] - innerBoxes[b + 1], innerBoxes[b + 5] - innerBoxes[b + 2])) / 2);
+            return size;
+        }
     }
 
     /** Not instantiable. */
@@ -43,7 +53,8 @@ final class ClosedParts {
     }
 
     /**
-     * The closed parts of a mesh that have an inner ball, found on the first call and kept.
+     * The closed parts of a mesh that have a core (an inner ball or inner boxes), found on the first
+     * call and kept.
      *
      * @param mesh the mesh
      * @return its parts (none for a mesh without a closed part), not to be changed
@@ -57,7 +68,7 @@ final class ClosedParts {
         return parts;
     }
 
-    /** {@return the closed parts of a mesh with an inner ball, found anew} */
+    /** {@return the closed parts of a mesh with a core, found anew} */
     private static List<Part> find(TriangleMesh mesh) {
         int[] welded = weld(mesh);
         int[] indices = mesh.indices();
@@ -66,10 +77,11 @@ final class ClosedParts {
         for (int[] triangles : closedParts(welded, indices, partOf)) {
             TriangleMesh part = subMesh(mesh, welded, triangles);
             InnerBall ball = InnerBall.ofClosed(part);
-            if (ball != null) {
+            double[] innerBoxes = InnerBoxes.of(part);
+            if (ball != null || innerBoxes.length > 0) {
                 double[] box = new double[6];
                 part.bounds(box, 0);
-                parts.add(new Part(triangles, ball, box));
+                parts.add(new Part(triangles, ball, box, innerBoxes));
             }
         }
         return List.copyOf(parts);

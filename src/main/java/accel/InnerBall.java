@@ -114,7 +114,7 @@ public final class InnerBall {
         // the larger ball first: the other's centre is tried only when this one's is not surely inside
         balls.sort(Comparator.comparingDouble((InnerBall ball) -> ball.radius).reversed());
         for (InnerBall ball : balls)
-            if (inside(mesh, data, ball))
+            if (inside(mesh, ball))
                 return ball;
         return null;
     }
@@ -172,17 +172,33 @@ public final class InnerBall {
     /**
      * Whether a ball's centre lies surely inside a closed mesh: each parity ray from it is sure and
      * crosses the mesh an odd number of times.
-     *
-     * @param data scratch space for a triangle's data
      */
-    private static boolean inside(TriangleMesh mesh, double[] data, InnerBall ball) {
-        double[] centre = { ball.cx, ball.cy, ball.cz };
+    private static boolean inside(TriangleMesh mesh, InnerBall ball) {
+        return parity(mesh, ball.cx, ball.cy, ball.cz) == 1;
+    }
+
+    /**
+     * Whether a point lies inside a closed mesh, as the parity rays from it tell: 1 when each is sure
+     * and crosses the mesh an odd number of times, 0 when each is sure and crosses it an even number
+     * of times, −1 when a ray is unsure or they disagree.
+     *
+     * @param mesh the mesh, closed
+     * @param x    the point, x
+     * @param y    the point, y
+     * @param z    the point, z
+     * @return 1 inside, 0 outside, −1 unsure
+     */
+    static int parity(TriangleMesh mesh, double x, double y, double z) {
+        double[] data = new double[TriangleMesh.TRIANGLE_DATA];
+        double[] centre = { x, y, z };
+        int parity = UNSURE;
         for (double[] d : PARITY_DIRECTIONS) {
             int crossings = crossings(mesh, data, centre, d);
-            if (crossings == UNSURE || crossings % 2 == 0)
-                return false;
+            if (crossings == UNSURE || (parity != UNSURE && crossings % 2 != parity))
+                return UNSURE;
+            parity = crossings % 2;
         }
-        return true;
+        return parity;
     }
 
     /**

@@ -43,7 +43,7 @@ final class PacketWalk {
         }
         int active = 0;
         for (int r = 0; r < n; ++r) {
-            RayState ray = rays[r];
+            RayState ray = rays[r].invert();
             if (!BundleGather.throughGatheredUnbounded(query, ray, minK))
                 ray.ktr = 0;
             if (ray.ktr > 0)
@@ -71,8 +71,6 @@ final class PacketWalk {
         Packet packet = query.packet;
         RayState[] rays = packet.rays;
         int n = packet.size;
-        for (int r = 0; r < n; ++r)
-            rays[r].invert();
         int[] links = nodes.links;
         int node = query.subtree;
         int first = firstRayMeeting(packet, node, 0, n - 1);

@@ -19,8 +19,8 @@ import geometries.Plane;
  * back face ({@link #setBackFace}) does when every ray leaves the surface on one side, and the rays'
  * two ray origins ({@link #setOrigins}) do when they leave it on both sides.
  * <p>
- * A closed mesh's inner ball that the pyramid passes through, on its way to a base outside the
- * mesh's box, lies across every ray ({@link #crossesClosedMesh}): the mesh blocks the whole bundle.
+ * Whether the pyramid passes through a closed mesh's core, and the mesh blocks the whole bundle, is
+ * told by {@link CoreCrossing} from the pyramid's vertices and margin.
  */
 public final class ShadowFrustum {
     /** How far outside, relative to the pyramid's size, a box or plane must be to be set aside. */
@@ -425,56 +425,35 @@ public final class ShadowFrustum {
                 boxes[offset + 5]);
     }
 
+    /** {@return the apex and the four corners of the base, three coordinates each: the frustum's own array, not to be changed} */
+    double[] vertices() {
+        return vertices;
+    }
+
+    /** {@return the thickness plus the margin: how far inside a body's core a ray must pass to count} */
+    double margin() {
+        return margin;
+    }
+
+    /** {@return whether the last {@link #set} succeeded} */
+    boolean isSet() {
+        return valid;
+    }
+
     /**
-     * Whether every ray of the bundle passes through the inside of a closed mesh's inner ball on its
-     * way to a base outside the mesh's box, so that the mesh's surface lies across every ray between
-     * its start and its end ({@link InnerBall}). The pyramid's cross-section through the ball (across
-     * the line from the apex to the base's centre, at a fraction λ of the way, 0 &lt; λ &lt; 1) must lie
-     * inside the ball by more than the thickness and margin: every ray's point at that fraction of its
-     * own way lies within the thickness of the section, and the section is the hull of its four
-     * corners. The base, grown by the thickness and margin, must lie outside the mesh's box.
+     * How far beyond the base's plane a box reaches: the largest signed distance of its corners from the
+     * plane, negative when the whole box lies on the apex's side.
      *
-     * @param ball   the inner ball of a closed mesh
      * @param boxes  an array of boxes, {minX, minY, minZ, maxX, maxY, maxZ} each
-     * @param offset where the mesh's box starts in the array
-     * @return true when every ray crosses the mesh; false when that is not sure (always after a
-     *         refused {@link #set})
+     * @param offset where the box starts in the array
+     * @return the distance
      */
-    boolean crossesClosedMesh(InnerBall ball, double[] boxes, int offset) {
-        return baseOutside(boxes, offset) && sectionInside(ball);
-    }
-
-    /** Whether the base, grown by the thickness and margin, lies outside the box at an offset of an array. */
-    boolean baseOutside(double[] box, int offset) {
-        double[] v = vertices;
-        for (int k = 0; k < 3; ++k) {
-            double low = Math.min(Math.min(v[3 + k], v[6 + k]), Math.min(v[9 + k], v[12 + k]));
-            double high = Math.max(Math.max(v[3 + k], v[6 + k]), Math.max(v[9 + k], v[12 + k]));
-            if (high + margin < box[offset + k] || low - margin > box[offset + 3 + k])
-                return true;
-        }
-        return false;
-    }
-
-    /** Whether the pyramid's cross-section through a ball's centre lies inside it by more than the thickness and margin. */
-    boolean sectionInside(InnerBall ball) {
-        double[] v = vertices;
-        double wx = (v[3] + v[6] + v[9] + v[12]) / 4 - v[0];
-        double wy = (v[4] + v[7] + v[10] + v[13]) / 4 - v[1];
-        double wz = (v[5] + v[8] + v[11] + v[14]) / 4 - v[2];
-        double lambda = ((ball.cx - v[0]) * wx + (ball.cy - v[1]) * wy + (ball.cz - v[2]) * wz)
-                / (wx * wx + wy * wy + wz * wz);
-        double reach = ball.radius - margin;
-        if (!(valid && lambda > 0 && lambda < 1 && reach > 0))
-            return false;
-        for (int i = 3; i < 15; i += 3) {
-            double x = v[0] + lambda * (v[i] - v[0]) - ball.cx;
-            double y = v[1] + lambda * (v[i + 1] - v[1]) - ball.cy;
-            double z = v[2] + lambda * (v[i + 2] - v[2]) - ball.cz;
-            if (!(x * x + y * y + z * z < reach * reach))
-                return false;
-        }
-        return true;
+    double beyondBase(double[] boxes, int offset) {
+        int p = 4 * (PLANES - 1);
+        double farthest = -planes[p + 3];
+        for (int k = 0; k < 3; ++k)
+            farthest += planes[p + k] * boxes[offset + (planes[p + k] > 0 ? 3 : 0) + k];
+        return farthest;
     }
 
     /** Whether the box from (x0, y0, z0) to (x1, y1, z1) may meet the pyramid, see {@link #meetsBox(double[], int)}. */

@@ -11,6 +11,7 @@ import static testutil.TestBundles.gatheredRay;
 import static testutil.TestBundles.pointOnTriangle;
 import static testutil.TestBundles.rayTransmittance;
 import static testutil.TestBundles.shadowRays;
+import static testutil.TestMeshes.cuboid;
 import static testutil.TestRandom.randomUnit;
 
 import java.util.ArrayList;
@@ -300,6 +301,27 @@ class ClosedMeshBlockersTest {
         assertNotNull(InnerBall.of(enclosing), "TC03: the enclosing mesh has an inner ball");
         assertEquals(0, enclosed.blocked, "TC03: a mesh around the light must block no bundle");
         assertTrue(enclosed.unblocked >= 50, "TC03: too few bundles gathered something: " + enclosed.unblocked);
+
+        // TC04: an opaque closed bar [−20, 20] × [−1.5, 1.5] × [3, 6] over the floor, its ball at its middle
+        // x = 0: narrow bundles (half-side 0.5) from the floor under it at x = 12 and x = −15 to squares over
+        // them miss the ball but pass through an inner box: blocked, and every ray is blocked by the scan;
+        // one from x = 25, beside the bar: not blocked
+        Geometries bar = new Geometries(new Plane(Point3D.ZERO, FLOOR_NORMAL), cuboid(-20, -1.5, 3, 20, 1.5, 6));
+        BoundingVolumeHierarchy barTree = BoundingVolumeHierarchy.build(bar);
+        BoundingVolumeHierarchy barScan = BoundingVolumeHierarchy.scan(bar);
+        Query barQuery = barTree.newQuery();
+        Query barScanQuery = barScan.newQuery();
+        Vector up = FLOOR_NORMAL.scale(Ray.DELTA);
+        for (double x : new double[] { 12, -15, 25 }) {
+            Point3D p = new Point3D(x, 0, 0);
+            Point3D c = new Point3D(x, 0, 30);
+            gatherLeaving(barTree, barQuery, p, up, c, new Vector(0.5, 0, 0), new Vector(0, 0.5, 0), false);
+            assertEquals(x < 20, barTree.blocksBundle(barQuery), "TC04: the bundle from x = " + x);
+            gatherLeaving(barScan, barScanQuery, p, up, c, new Vector(0.5, 0, 0), new Vector(0, 0.5, 0), false);
+            for (double[] ray : shadowRays(rnd, p, up, c, new Vector(0.5, 0, 0), new Vector(0, 0.5, 0), 10))
+                assertEquals(x < 20 ? 0 : 1, rayTransmittance(barScan, barScanQuery, ray, 0), 0,
+                        "TC04: a ray from x = " + x + " by the scan");
+        }
 
         // ===== Boundary Values Tests =====
         // TC11: 17 opaque closed sphere meshes of radii 1, 1.1, …, 2.6 in a row along x (6 apart, at

@@ -122,8 +122,18 @@ class ClosedPartsTest {
         assertEquals(2, ClosedParts.of(TestMeshes.merge(cubeOfSeparateFaces(0), cubeOfSeparateFaces(3))).size(),
                 "TC13: two welded cubes are two parts");
         // TC14: two cubes sharing a corner: one part by the weld, closed, but both its candidate centres
-        // are the shared corner, on its surface: no ball, so no part
+        // are the shared corner, on its surface: no ball; it is kept for its inner boxes, each inside
+        // one of the cubes [0, 1]³ and [1, 2]³
         TriangleMesh touching = TestMeshes.merge(TestMeshes.cube(0, 0, 0, 1), TestMeshes.cube(1, 1, 1, 1));
-        assertTrue(ClosedParts.of(touching).isEmpty(), "TC14: cubes sharing a corner have no ball");
+        List<ClosedParts.Part> corner = ClosedParts.of(touching);
+        assertEquals(1, corner.size(), "TC14: cubes sharing a corner are one part");
+        assertNull(corner.get(0).ball(), "TC14: cubes sharing a corner have no ball");
+        double[] inner = corner.get(0).innerBoxes();
+        assertTrue(inner.length > 0, "TC14: the cubes have inner boxes");
+        for (int b = 0; b < inner.length; b += 6) {
+            double low = inner[b] < 1 ? 0 : 1;
+            for (int k = 0; k < 3; ++k)
+                assertTrue(inner[b + k] > low && inner[b + 3 + k] < low + 1, "TC14: box " + b / 6 + " in one cube");
+        }
     }
 }

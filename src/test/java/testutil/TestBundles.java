@@ -9,7 +9,9 @@ import static testutil.TestRandom.edgeOrInner;
 import static testutil.TestRandom.randomUnit;
 
 import java.util.Arrays;
+import java.util.Iterator;
 import java.util.List;
+import java.util.NoSuchElementException;
 import java.util.Random;
 import java.util.function.Supplier;
 
@@ -430,6 +432,44 @@ public final class TestBundles {
                 segment[2] + t * (segment[5] - segment[2]) };
     }
 
+    /** The margin of the standard pyramid ({@link #standard}): 1e-7 of its size 28. */
+    public static final double STANDARD_MARGIN = 2.8e-6;
+
+    /**
+     * The standard pyramid: apex (0, 0, 0), base (±2, ±2, 10), no thickness. Its sides are the planes
+     * x = ±z/5 and y = ±z/5, its base the plane z = 10, and its margin {@value #STANDARD_MARGIN}.
+     *
+     * @return the frustum
+     */
+    public static ShadowFrustum standard() {
+        return standard(0);
+    }
+
+    /**
+     * The standard pyramid: apex (0, 0, 0), base (±2, ±2, 10), with a thickness.
+     *
+     * @param thickness how far the rays may stray from the pyramid
+     * @return the frustum
+     */
+    public static ShadowFrustum standard(double thickness) {
+        ShadowFrustum frustum = new ShadowFrustum();
+        assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, thickness),
+                "the standard pyramid must be set");
+        return frustum;
+    }
+
+    /**
+     * Whether a box holds a point.
+     *
+     * @param box   {minX, minY, minZ, maxX, maxY, maxZ}
+     * @param point the point
+     * @return true when the point is in the (closed) box
+     */
+    public static boolean holds(double[] box, double[] point) {
+        return point[0] >= box[0] && point[0] <= box[3] && point[1] >= box[1] && point[1] <= box[4]
+                && point[2] >= box[2] && point[2] <= box[5];
+    }
+
     /**
      * Sets a frustum to a pyramid of {@link #randomPyramid}'s numbers.
      *
@@ -484,7 +524,7 @@ public final class TestBundles {
          * @param f       the bundle's number
          * @return the bundle, or null when the pyramid is flat (refused, no segment drawn)
          */
-        public static RandomBundle set(Random rnd, ShadowFrustum frustum, int f) {
+        private static RandomBundle set(Random rnd, ShadowFrustum frustum, int f) {
             double[] p = randomPyramid(rnd);
             double thickness = f % 4 == 0 ? 0 : Math.pow(10, -4 + 4 * rnd.nextDouble());
             if (!setPyramid(frustum, p, thickness))
@@ -493,6 +533,41 @@ public final class TestBundles {
             for (int i = 0; i < segments.length; ++i)
                 segments[i] = raySegment(rnd, p, thickness);
             return new RandomBundle(p, thickness, segments);
+        }
+
+        /**
+         * Draws some bundles ({@link #set}) one after the other as they are walked, each set in a
+         * frustum when it is reached; the flat ones are left out.
+         *
+         * @param rnd     the generator
+         * @param frustum the frustum to set
+         * @param count   how many to draw
+         * @return the bundles, to walk once
+         */
+        public static Iterable<RandomBundle> walk(Random rnd, ShadowFrustum frustum, int count) {
+            return () -> new Iterator<>() {
+                private int f;
+                private RandomBundle next;
+                private boolean drawn;
+
+                @Override
+                public boolean hasNext() {
+                    // drawn only when asked for: the frustum holds the bundle last returned until then
+                    while (!drawn) {
+                        next = f < count ? set(rnd, frustum, f++) : null;
+                        drawn = next != null || f >= count;
+                    }
+                    return next != null;
+                }
+
+                @Override
+                public RandomBundle next() {
+                    if (!hasNext())
+                        throw new NoSuchElementException("no more random bundles");
+                    drawn = false;
+                    return next;
+                }
+            };
         }
     }
 

@@ -20,11 +20,26 @@ public final class TestMeshes {
      * @return the mesh
      */
     public static TriangleMesh cube(double x0, double y0, double z0, double side) {
+        return cuboid(x0, y0, z0, x0 + side, y0 + side, z0 + side);
+    }
+
+    /**
+     * A closed box mesh [x0, x1] × [y0, y1] × [z0, z1]: twelve triangles, two per face, facing out.
+     *
+     * @param x0 the low corner, x
+     * @param y0 the low corner, y
+     * @param z0 the low corner, z
+     * @param x1 the high corner, x
+     * @param y1 the high corner, y
+     * @param z1 the high corner, z
+     * @return the mesh
+     */
+    public static TriangleMesh cuboid(double x0, double y0, double z0, double x1, double y1, double z1) {
         double[] vertices = new double[24];
         for (int i = 0; i < 8; ++i) {
-            vertices[3 * i] = x0 + (i & 1) * side;
-            vertices[3 * i + 1] = y0 + (i >> 1 & 1) * side;
-            vertices[3 * i + 2] = z0 + (i >> 2 & 1) * side;
+            vertices[3 * i] = (i & 1) == 0 ? x0 : x1;
+            vertices[3 * i + 1] = (i >> 1 & 1) == 0 ? y0 : y1;
+            vertices[3 * i + 2] = (i >> 2 & 1) == 0 ? z0 : z1;
         }
         return new TriangleMesh(vertices, cubeFaces());
     }
