@@ -11,6 +11,7 @@ import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
 
+import static primitives.Util.alignZero;
 import static primitives.Util.requireNonNull;
 
 /**
@@ -27,6 +28,13 @@ import static primitives.Util.requireNonNull;
  * {@link Triangle}'s: (p2 − p1) × (p3 − p2), normalised. The {@link BoundingVolumeHierarchy} holds
  * a mesh's triangles as its own bodies, by index. A hit on a mesh is a {@link MeshPoint}, which
  * knows its triangle, so {@link GeoPoint#getNormal()} gives that triangle's normal.
+ * <p>
+ * A mesh is flat until it is given a normal per vertex ({@link #setNormals}, or {@link #smoothNormals}
+ * to compute them): then it is smooth, and the normal of a hit is its triangle's vertex normals mixed
+ * by the hit's barycentric weights, normalised, found when the hit is shaded (the intersection tests
+ * never read the normals). The shadow rays of a hit on a smooth mesh leave from the point lifted onto
+ * the curved surface the normals describe ({@link GeoPoint#getShadowPoint}), so that a coarse mesh
+ * shows no shadow-terminator artefacts (see {@link MeshShading}).
  */
 public final class TriangleMesh extends Geometry {
     /** The number of doubles of a triangle's data for {@link #triangleData}. */
@@ -43,6 +51,8 @@ public final class TriangleMesh extends Geometry {
     /** The box around every point the renderer's test of a triangle accepts. */
     private final double[] box = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+    /** The vertices' normals, when the mesh is smooth. */
+    private final MeshShading shading;
 
     /**
      * A hit on a mesh: the point, the mesh and the triangle of the mesh the point lies on.
@@ -50,6 +60,8 @@ public final class TriangleMesh extends Geometry {
     public static final class MeshPoint extends GeoPoint {
         /** The index of the triangle hit, in the mesh's order. */
         public final int triangle;
+        /** The barycentric weights of the triangle's vertices at the point, found when first needed. */
+        private double[] weights;
 
         /**
          * Pairs a mesh and one of its triangles with a point on it.
@@ -63,10 +75,31 @@ public final class TriangleMesh extends Geometry {
             this.triangle = triangle;
         }
 
-        /** {@return the unit normal of the triangle hit} */
+        /** {@return the unit normal of the triangle hit, or on a smooth mesh the smooth normal at the point} */
         @Override
         public Vector getNormal() {
-            return ((TriangleMesh) geometry).getNormal(triangle);
+            TriangleMesh mesh = (TriangleMesh) geometry;
+            return mesh.isSmooth() ? mesh.smoothNormal(triangle, weights()) : mesh.getNormal(triangle);
+        }
+
+        /**
+         * {@inheritDoc} On a smooth mesh, the point lifted onto the tangent planes of the triangle's
+         * vertices that it lies below, seen from the light's side (see {@link MeshShading}).
+         */
+        @Override
+        public Point3D getShadowPoint(Vector l) {
+            TriangleMesh mesh = (TriangleMesh) geometry;
+            if (!mesh.isSmooth())
+                return point;
+            double side = alignZero(getNormal().dotProduct(requireNonNull(l, "light direction")));
+            return side == 0 ? point : mesh.shading.shadowPoint(triangle, weights(), point, side < 0 ? 1 : -1);
+        }
+
+        /** {@return the barycentric weights of the triangle's vertices at the point} */
+        private double[] weights() {
+            if (weights == null)
+                weights = ((TriangleMesh) geometry).weights(triangle, point);
+            return weights;
         }
 
         @Override
@@ -117,6 +150,44 @@ public final class TriangleMesh extends Geometry {
                 box[3 + k] = Math.max(box[3 + k], triangleBox[3 + k]);
             }
         }
+        this.shading = new MeshShading(this.vertices, this.indices);
+    }
+
+    /**
+     * Makes the mesh smooth with the given vertex normals (copied).
+     *
+     * @param normals one unit normal per vertex, x, y and z of each in turn (outward, as the triangles'
+     *                normals are, for a light to shade the side it faces)
+     * @return this mesh
+     * @throws IllegalArgumentException when the array is null, its length is not three times the
+     *                                  number of vertices, or a normal is not a unit vector (NaN or
+     *                                  infinite included; the message names the vertex)
+     */
+    public TriangleMesh setNormals(double[] normals) {
+        shading.setNormals(normals);
+        return this;
+    }
+
+    /**
+     * Makes the mesh smooth with vertex normals computed from its triangles: at each vertex, the
+     * normals of the triangles around it weighted by their angles there, normalised. The vertices of a
+     * sharp edge should not be shared by its two sides, or the edge is rounded too.
+     *
+     * @return this mesh
+     */
+    public TriangleMesh smoothNormals() {
+        shading.computeNormals(this::getNormal);
+        return this;
+    }
+
+    /** {@return true when the mesh has vertex normals, false when it is flat} */
+    public boolean isSmooth() {
+        return shading.isSmooth();
+    }
+
+    /** {@return a copy of the vertex normals, three numbers per vertex, or null when the mesh is flat} */
+    public double[] getNormals() {
+        return shading.getNormals();
     }
 
     /**
@@ -244,11 +315,12 @@ public final class TriangleMesh extends Geometry {
 
     /**
      * The unit normal at a point of the mesh: that of the triangle the point lies on (of the nearest
-     * to it, on an edge two triangles share). Every triangle is searched; a renderer gets the normal
-     * from the hit, {@link MeshPoint#getNormal()}, instead.
+     * to it, on an edge two triangles share), or on a smooth mesh the smooth normal there. Every
+     * triangle is searched; a renderer gets the normal from the hit, {@link MeshPoint#getNormal()},
+     * instead.
      *
      * @param point a point on the mesh
-     * @return the normal of the triangle it lies on
+     * @return the normal of the triangle it lies on, or the smooth normal
      * @throws IllegalArgumentException when the point is null or lies on no triangle of the mesh
      */
     @Override
@@ -265,7 +337,33 @@ public final class TriangleMesh extends Geometry {
         }
         if (nearest < 0)
             throw new IllegalArgumentException("point " + point + " lies on no triangle of the mesh");
-        return getNormal(nearest);
+        return isSmooth() ? smoothNormal(nearest, weights(nearest, point)) : getNormal(nearest);
+    }
+
+    /**
+     * The smooth normal at a point of a triangle; its flat normal where the vertex normals cancel out.
+     *
+     * @param t       the triangle
+     * @param weights the barycentric weights of its vertices at the point
+     */
+    private Vector smoothNormal(int t, double[] weights) {
+        Vector smooth = shading.normal(t, weights);
+        return smooth != null ? smooth : getNormal(t);
+    }
+
+    /**
+     * The barycentric weights of a triangle's three vertices at a point of it (of its plane).
+     *
+     * @param t     the triangle
+     * @param point the point
+     * @return {w1, w2, w3}, summing to 1
+     */
+    private double[] weights(int t, Point3D point) {
+        double[] data = new double[TRIANGLE_DATA];
+        double[] foot = new double[Triangle.PROJECTION];
+        triangleData(t, data, 0);
+        Triangle.project(data, point.getX(), point.getY(), point.getZ(), foot);
+        return new double[] { 1 - foot[0] - foot[1], foot[0], foot[1] };
     }
 
     /**

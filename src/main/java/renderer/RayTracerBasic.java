@@ -4,6 +4,7 @@ import accel.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
 import geometries.Triangle;
 import geometries.TriangleMesh;
+import geometries.TriangleMesh.MeshPoint;
 import lighting.AreaLightSource;
 import lighting.LightSource;
 import primitives.Color;
@@ -121,7 +122,7 @@ public class RayTracerBasic extends RayTracerBase {
      * intensity scaled by its transparency, then by the diffuse and the specular factor, both added.
      */
     private Color calcLocalEffects(GeoPoint geoPoint, Vector v, Vector n, double k, ThreadState state) {
-        double nv = alignZero(n.dotProduct(v));
+        double nv = viewSide(geoPoint, n, v);
         if (nv == 0)
             return Color.BLACK;
         Material material = geoPoint.geometry.getMaterial();
@@ -148,6 +149,23 @@ public class RayTracerBasic extends RayTracerBase {
         }
         // the components are sums of non-negative terms: kept at the largest double at the end, as after each sum
         return new Color(Math.min(r, Double.MAX_VALUE), Math.min(g, Double.MAX_VALUE), Math.min(b, Double.MAX_VALUE));
+    }
+
+    /**
+     * Which side of the surface the viewer is on: n·v. On a smooth mesh the smooth normal may turn away
+     * from a viewer that the triangle under it faces (near a silhouette); the viewer's side is then
+     * the triangle's, where the viewer really is, so those points are lit and not left black.
+     *
+     * @return a number of the sign of the viewer's side (as v·n: negative on the side n points to), or 0
+     */
+    private static double viewSide(GeoPoint geoPoint, Vector n, Vector v) {
+        double nv = alignZero(n.dotProduct(v));
+        if (geoPoint instanceof MeshPoint hit && hit.geometry instanceof TriangleMesh mesh && mesh.isSmooth()) {
+            double flat = alignZero(mesh.getNormal(hit.triangle).dotProduct(v));
+            if (flat * nv < 0 || nv == 0)
+                return flat;
+        }
+        return nv;
     }
 
     /** A colour component scaled as {@link Color#scale(double)} scales it: an overflow kept at the largest double. */
@@ -278,7 +296,9 @@ public class RayTracerBasic extends RayTracerBase {
      * How much of a light reaches a point: 1 when nothing is in the way, 0 when an opaque body is,
      * and the product of the {@code kT} of the transparent bodies in between otherwise. With soft
      * shadows on and a light with an area, the average over rays to the light's square. Nothing is
-     * allocated: the rays live in the calling thread's {@link LightSquare}.
+     * allocated: the rays live in the calling thread's {@link LightSquare}. The rays leave from the
+     * hit's shadow point ({@link GeoPoint#getShadowPoint}): the point itself, or on a smooth mesh the
+     * point lifted onto the surface its normals describe.
      *
      * @param light    the light
      * @param l        the unit direction from the light to the point
@@ -289,7 +309,9 @@ public class RayTracerBasic extends RayTracerBase {
      */
     double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint, ThreadState state) {
         BoundingVolumeHierarchy bvh = accelerator();
-        Point3D point = geoPoint.point;
+        Point3D point = geoPoint.getShadowPoint(l);
+        if (point != geoPoint.point)
+            l = light.getL(point);
         // the ray to the light itself, or to the centre of its square
         LightSquare square = state.lightSquare().setPoint(point, n, l, bvh, state.query(bvh))
                 .setOnTriangle(geoPoint.geometry instanceof TriangleMesh || geoPoint.geometry instanceof Triangle);
