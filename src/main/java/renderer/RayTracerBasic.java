@@ -18,7 +18,9 @@ import static primitives.Util.alignZero;
 
 /**
  * The course's ray tracer: Phong local lighting with shadows that let light through transparent
- * bodies, plus reflection and straight-through refraction traced recursively.
+ * bodies, plus reflection and refraction traced recursively: straight through, as in the course, or
+ * bent by Snell's law for a material with an index of refraction (see {@link Material#setIor}; its
+ * shadows stay the course's, kT through each surface).
  */
 public class RayTracerBasic extends RayTracerBase {
     /** The deepest recursion of reflected and refracted rays. */
@@ -159,13 +161,22 @@ public class RayTracerBasic extends RayTracerBase {
      * @return a number of the sign of the viewer's side (as v·n: negative on the side n points to), or 0
      */
     private static double viewSide(GeoPoint geoPoint, Vector n, Vector v) {
-        double nv = alignZero(n.dotProduct(v));
+        return alignZero(sideNormal(geoPoint, n, v).dotProduct(v));
+    }
+
+    /**
+     * The normal that tells which side of the surface a ray comes from: n, except on a smooth mesh
+     * where the smooth normal n and the triangle's disagree about it (or n runs along the ray): the
+     * triangle's.
+     */
+    private static Vector sideNormal(GeoPoint geoPoint, Vector n, Vector v) {
         if (geoPoint instanceof MeshPoint hit && hit.geometry instanceof TriangleMesh mesh && mesh.isSmooth()) {
-            double flat = alignZero(mesh.getNormal(hit.triangle).dotProduct(v));
-            if (flat * nv < 0 || nv == 0)
+            double nv = alignZero(n.dotProduct(v));
+            Vector flat = mesh.getNormal(hit.triangle);
+            if (alignZero(flat.dotProduct(v)) * nv < 0 || nv == 0)
                 return flat;
         }
-        return nv;
+        return n;
     }
 
     /** A colour component scaled as {@link Color#scale(double)} scales it: an overflow kept at the largest double. */
@@ -188,21 +199,35 @@ public class RayTracerBasic extends RayTracerBase {
     /**
      * Reflected and refracted light, each traced while its factor stays above the limit: one sharp
      * ray each from a mirror and clear glass, spread rays from glossy ({@code kG}) and blurry
-     * ({@code kB}) materials.
+     * ({@code kB}) materials. A material with an index of refraction bends the refracted ray by Snell's
+     * law; when the ray cannot leave (total internal reflection) its share kT goes to the reflection,
+     * and with Fresnel the share kT splits between the two by Schlick's approximation.
      */
     private Color calcGlobalEffects(GeoPoint geoPoint, Vector v, Vector n, int level, double k, ThreadState state) {
         Material material = geoPoint.geometry.getMaterial();
         Color color = Color.BLACK;
         double kR = material.getKr();
+        double kT = material.getKt();
+        Refraction refraction = null;
+        if (material.hasIor() && kT > 0) {
+            Vector side = sideNormal(geoPoint, n, v);
+            if (alignZero(side.dotProduct(v)) != 0) {
+                refraction = new Refraction(v, side, material.getIor());
+                double reflected = refraction.isTotal() ? 1 : material.isFresnel() ? refraction.reflectance() : 0;
+                kR += kT * reflected;
+                kT *= 1 - reflected;
+            }
+        }
         double kkr = k * kR;
         if (kkr > MIN_CALC_COLOR_K)
             color = calcSpreadEffect(geoPoint.point, constructReflectedRay(geoPoint.point, v, n), n,
                     material.getKg(), level, kR, kkr, state);
-        double kT = material.getKt();
         double kkt = k * kT;
-        if (kkt > MIN_CALC_COLOR_K)
-            color = color.add(calcSpreadEffect(geoPoint.point, constructRefractedRay(geoPoint.point, v, n), n,
-                    material.getKb(), level, kT, kkt, state));
+        if (kkt > MIN_CALC_COLOR_K) {
+            Ray refracted = refraction == null ? constructRefractedRay(geoPoint.point, v, n)
+                    : new Ray(geoPoint.point, refraction.direction(), n);
+            color = color.add(calcSpreadEffect(geoPoint.point, refracted, n, material.getKb(), level, kT, kkt, state));
+        }
         return color;
     }
 

@@ -3,7 +3,7 @@ package testutil;
 import geometries.TriangleMesh;
 import primitives.Point3D;
 
-/** Small triangle meshes shared by the tests and the benchmark: a cube, and one mesh of several. */
+/** Small triangle meshes shared by the tests and the benchmark: a cube, a box, and one mesh of several. */
 public final class TestMeshes {
     /** Not instantiable. */
     private TestMeshes() {
@@ -20,11 +20,25 @@ public final class TestMeshes {
      * @return the mesh
      */
     public static TriangleMesh cube(double x0, double y0, double z0, double side) {
+        return box(new Point3D(x0, y0, z0), side, side, side);
+    }
+
+    /**
+     * An axis-aligned box of 12 triangles over 8 shared vertices, as {@link #cube} (its triangles face
+     * outward).
+     *
+     * @param low    the low corner
+     * @param width  the edge along x
+     * @param height the edge along y
+     * @param depth  the edge along z
+     * @return the mesh
+     */
+    public static TriangleMesh box(Point3D low, double width, double height, double depth) {
         double[] vertices = new double[24];
         for (int i = 0; i < 8; ++i) {
-            vertices[3 * i] = x0 + (i & 1) * side;
-            vertices[3 * i + 1] = y0 + (i >> 1 & 1) * side;
-            vertices[3 * i + 2] = z0 + (i >> 2 & 1) * side;
+            vertices[3 * i] = low.getX() + (i & 1) * width;
+            vertices[3 * i + 1] = low.getY() + (i >> 1 & 1) * height;
+            vertices[3 * i + 2] = low.getZ() + (i >> 2 & 1) * depth;
         }
         return new TriangleMesh(vertices, cubeFaces());
     }
