@@ -50,6 +50,17 @@ public abstract class Intersectable {
         }
 
         /**
+         * The surface coordinates of the point, where the body's texture is looked up: the geometry's
+         * there ({@link Geometry#getUV}). A {@link TriangleMesh} answers with the UVs of the triangle hit.
+         *
+         * @return {u, v}
+         * @throws UnsupportedOperationException when the body has no surface coordinates
+         */
+        public double[] getUV() {
+            return geometry.getUV(point);
+        }
+
+        /**
          * The point the shadow rays toward a light leave from: the hit point itself, except on a smooth
          * {@link TriangleMesh}, whose flat triangles lie below the surface their normals describe.
          *

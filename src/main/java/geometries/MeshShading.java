@@ -1,10 +1,9 @@
 package geometries;
 
-import java.util.function.IntFunction;
-
 import primitives.Point3D;
 import primitives.Vector;
 
+import static primitives.Util.alignZero;
 import static primitives.Util.requireNonNull;
 
 /**
@@ -29,20 +28,26 @@ final class MeshShading {
     /** A sum of weighted normals shorter than this is taken as no direction at all. */
     private static final double NO_DIRECTION = 1e-12;
 
+    /** The mesh, for its triangles' data and flat normals. */
+    private final TriangleMesh mesh;
     /** The mesh's vertices' coordinates, three doubles per vertex (the mesh's array, not a copy). */
     private final double[] vertices;
     /** The mesh's triangles, three vertex indices each (the mesh's array, not a copy). */
     private final int[] indices;
     /** The unit normals, three doubles per vertex, or null for a flat mesh. */
     private double[] normals;
+    /** The surface coordinates, u and v per vertex, or null when the mesh has none. */
+    private double[] uvs;
 
     /**
      * Shading data for a mesh's vertices, none yet.
      *
+     * @param mesh     the mesh
      * @param vertices the mesh's vertices' coordinates
      * @param indices  the mesh's triangles' vertex indices
      */
-    MeshShading(double[] vertices, int[] indices) {
+    MeshShading(TriangleMesh mesh, double[] vertices, int[] indices) {
+        this.mesh = mesh;
         this.vertices = vertices;
         this.indices = indices;
     }
@@ -87,20 +92,68 @@ final class MeshShading {
     }
 
     /**
+     * Sets the vertices' surface coordinates, checked and copied.
+     *
+     * @param given u and v of each vertex in turn
+     * @throws IllegalArgumentException when the array is null or of the wrong length, or a coordinate is
+     *                                  not a finite number (the message names the vertex)
+     */
+    void setUVs(double[] given) {
+        requireNonNull(given, "mesh UVs");
+        if (given.length != 2 * vertexCount())
+            throw new IllegalArgumentException("mesh UVs need two numbers (u v) for each of the " + vertexCount()
+                    + " vertices (" + 2 * vertexCount() + " numbers), got " + given.length);
+        for (int i = 0; i < given.length; ++i)
+            if (!Double.isFinite(given[i]))
+                throw new IllegalArgumentException("the UV of mesh vertex " + i / 2 + " has a coordinate that is not"
+                        + " a finite number: " + given[i]);
+        uvs = given.clone();
+    }
+
+    /** {@return a copy of the vertices' surface coordinates, or null when the mesh has none} */
+    double[] getUVs() {
+        return uvs == null ? null : uvs.clone();
+    }
+
+    /** {@return true when the mesh has surface coordinates} */
+    boolean hasUVs() {
+        return uvs != null;
+    }
+
+    /**
+     * The surface coordinates at a point of a triangle: its vertices' UVs mixed by the point's weights.
+     *
+     * @param t       the triangle
+     * @param weights the weights of its three vertices at the point
+     * @return {u, v}
+     * @throws UnsupportedOperationException when the mesh has no UVs
+     */
+    double[] uv(int t, double[] weights) {
+        if (uvs == null)
+            throw new UnsupportedOperationException(mesh + " has no UVs");
+        double u = 0;
+        double v = 0;
+        for (int k = 0; k < 3; ++k) {
+            int c = 2 * indices[3 * t + k];
+            u += weights[k] * uvs[c];
+            v += weights[k] * uvs[c + 1];
+        }
+        return new double[] { u, v };
+    }
+
+    /**
      * Computes the vertex normals from the triangles around each vertex: the sum of their unit normals,
      * each weighted by the triangle's angle at the vertex (so that how a surface is cut into triangles
      * does not tilt its normals), normalised. Where the sum vanishes (the two sides of a sheet meet at
      * the vertex) the vertex takes the normal of its first triangle; a vertex no triangle uses gets
      * (0, 0, 1), which nothing reads.
-     *
-     * @param faceNormals the unit normal of each triangle, by its index
      */
-    void computeNormals(IntFunction<Vector> faceNormals) {
+    void computeNormals() {
         double[] sums = new double[vertices.length];
         double[] first = new double[vertices.length];
         boolean[] used = new boolean[vertexCount()];
         for (int t = 0; t < indices.length / 3; ++t) {
-            Vector normal = faceNormals.apply(t);
+            Vector normal = mesh.getNormal(t);
             double[] face = { normal.getX(), normal.getY(), normal.getZ() };
             for (int k = 0; k < 3; ++k) {
                 int v = indices[3 * t + k];
@@ -142,16 +195,29 @@ final class MeshShading {
     }
 
     /**
+     * The barycentric weights of a triangle's three vertices at a point of it (of its plane).
+     *
+     * @param t     the triangle
+     * @param point the point
+     * @return {w1, w2, w3}, summing to 1
+     */
+    double[] weights(int t, Point3D point) {
+        double[] data = new double[TriangleMesh.TRIANGLE_DATA];
+        double[] foot = new double[Triangle.PROJECTION];
+        mesh.triangleData(t, data, 0);
+        Triangle.project(data, point.getX(), point.getY(), point.getZ(), foot);
+        return new double[] { 1 - foot[0] - foot[1], foot[0], foot[1] };
+    }
+
+    /**
      * The smooth normal at a point of a triangle: its vertex normals mixed by the point's barycentric
-     * weights, normalised.
+     * weights, normalised; the triangle's own normal where they cancel out.
      *
      * @param t       the triangle
      * @param weights the weights of its three vertices at the point
-     * @return the unit normal, or null when the mixed normals cancel out (or the mesh is flat)
+     * @return the unit normal
      */
     Vector normal(int t, double[] weights) {
-        if (normals == null)
-            return null;
         double x = 0;
         double y = 0;
         double z = 0;
@@ -162,23 +228,26 @@ final class MeshShading {
             z += weights[k] * normals[n + 2];
         }
         double length = Math.sqrt(x * x + y * y + z * z);
-        return length > NO_DIRECTION ? new Vector(x / length, y / length, z / length) : null;
+        return length > NO_DIRECTION ? new Vector(x / length, y / length, z / length) : mesh.getNormal(t);
     }
 
     /**
      * The point shadow rays leave a hit from (Hanika's fix, see the class comment): the hit moved onto
-     * the tangent planes of the triangle's vertices that it lies below, seen from the side the rays
-     * leave to, mixed by its barycentric weights.
+     * the tangent planes of the triangle's vertices that it lies below, seen from the side of the smooth
+     * normal the light is on, mixed by its barycentric weights.
      *
      * @param t       the triangle
      * @param weights the weights of its three vertices at the point
      * @param point   the hit
-     * @param side    1 when the shadow rays leave to the side the normals point to, −1 for the other
-     * @return the lifted point, or the hit itself when no tangent plane lies above it (or the mesh is flat)
+     * @param l       the unit direction from the light to the point
+     * @return the lifted point, or the hit itself when no tangent plane lies above it or the light lies
+     *         along the surface
      */
-    Point3D shadowPoint(int t, double[] weights, Point3D point, double side) {
-        if (normals == null)
+    Point3D shadowPoint(int t, double[] weights, Point3D point, Vector l) {
+        double facing = alignZero(normal(t, weights).dotProduct(requireNonNull(l, "light direction")));
+        if (facing == 0)
             return point;
+        double side = facing < 0 ? 1 : -1;
         double x = 0;
         double y = 0;
         double z = 0;

@@ -11,7 +11,6 @@ import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
 
-import static primitives.Util.alignZero;
 import static primitives.Util.requireNonNull;
 
 /**
@@ -79,7 +78,7 @@ public final class TriangleMesh extends Geometry {
         @Override
         public Vector getNormal() {
             TriangleMesh mesh = (TriangleMesh) geometry;
-            return mesh.isSmooth() ? mesh.smoothNormal(triangle, weights()) : mesh.getNormal(triangle);
+            return mesh.isSmooth() ? mesh.shading.normal(triangle, weights()) : mesh.getNormal(triangle);
         }
 
         /**
@@ -89,16 +88,19 @@ public final class TriangleMesh extends Geometry {
         @Override
         public Point3D getShadowPoint(Vector l) {
             TriangleMesh mesh = (TriangleMesh) geometry;
-            if (!mesh.isSmooth())
-                return point;
-            double side = alignZero(getNormal().dotProduct(requireNonNull(l, "light direction")));
-            return side == 0 ? point : mesh.shading.shadowPoint(triangle, weights(), point, side < 0 ? 1 : -1);
+            return mesh.isSmooth() ? mesh.shading.shadowPoint(triangle, weights(), point, l) : point;
+        }
+
+        /** {@return the UVs of the triangle's vertices mixed by the point's barycentric weights} */
+        @Override
+        public double[] getUV() {
+            return ((TriangleMesh) geometry).shading.uv(triangle, weights());
         }
 
         /** {@return the barycentric weights of the triangle's vertices at the point} */
         private double[] weights() {
             if (weights == null)
-                weights = ((TriangleMesh) geometry).weights(triangle, point);
+                weights = ((TriangleMesh) geometry).shading.weights(triangle, point);
             return weights;
         }
 
@@ -150,7 +152,7 @@ public final class TriangleMesh extends Geometry {
                 box[3 + k] = Math.max(box[3 + k], triangleBox[3 + k]);
             }
         }
-        this.shading = new MeshShading(this.vertices, this.indices);
+        this.shading = new MeshShading(this, this.vertices, this.indices);
     }
 
     /**
@@ -176,7 +178,7 @@ public final class TriangleMesh extends Geometry {
      * @return this mesh
      */
     public TriangleMesh smoothNormals() {
-        shading.computeNormals(this::getNormal);
+        shading.computeNormals();
         return this;
     }
 
@@ -188,6 +190,42 @@ public final class TriangleMesh extends Geometry {
     /** {@return a copy of the vertex normals, three numbers per vertex, or null when the mesh is flat} */
     public double[] getNormals() {
         return shading.getNormals();
+    }
+
+    /**
+     * Gives the vertices surface coordinates (copied), which a texture is looked up at: a point of a
+     * triangle has its vertices' UVs mixed by its barycentric weights.
+     *
+     * @param uvs u and v of each vertex in turn (as an OBJ file's vt: the image's bottom left at (0, 0),
+     *            its top right at (1, 1))
+     * @return this mesh
+     * @throws IllegalArgumentException when the array is null, its length is not twice the number of
+     *                                  vertices, or a coordinate is not finite (the message names the vertex)
+     */
+    public TriangleMesh setUVs(double[] uvs) {
+        shading.setUVs(uvs);
+        return this;
+    }
+
+    /** {@return a copy of the vertices' UVs, two numbers per vertex, or null when the mesh has none} */
+    public double[] getUVs() {
+        return shading.getUVs();
+    }
+
+    /** {@return true once the mesh has UVs} */
+    @Override
+    protected boolean hasUV() {
+        return shading.hasUVs();
+    }
+
+    /**
+     * {@inheritDoc} The UVs of the triangle the point lies on, mixed by its barycentric weights there
+     * (every triangle is searched, as by {@link #getNormal(Point3D)}).
+     */
+    @Override
+    public double[] getUV(Point3D point) {
+        int t = nearestTriangle(point);
+        return shading.uv(t, shading.weights(t, point));
     }
 
     /**
@@ -325,6 +363,16 @@ public final class TriangleMesh extends Geometry {
      */
     @Override
     public Vector getNormal(Point3D point) {
+        int nearest = nearestTriangle(point);
+        return isSmooth() ? shading.normal(nearest, shading.weights(nearest, point)) : getNormal(nearest);
+    }
+
+    /**
+     * The triangle a point lies on (the nearest to it, on an edge two triangles share).
+     *
+     * @throws IllegalArgumentException when the point is null or lies on no triangle of the mesh
+     */
+    private int nearestTriangle(Point3D point) {
         requireNonNull(point, "point");
         int nearest = -1;
         double nearestDistance = Double.POSITIVE_INFINITY;
@@ -337,33 +385,7 @@ public final class TriangleMesh extends Geometry {
         }
         if (nearest < 0)
             throw new IllegalArgumentException("point " + point + " lies on no triangle of the mesh");
-        return isSmooth() ? smoothNormal(nearest, weights(nearest, point)) : getNormal(nearest);
-    }
-
-    /**
-     * The smooth normal at a point of a triangle; its flat normal where the vertex normals cancel out.
-     *
-     * @param t       the triangle
-     * @param weights the barycentric weights of its vertices at the point
-     */
-    private Vector smoothNormal(int t, double[] weights) {
-        Vector smooth = shading.normal(t, weights);
-        return smooth != null ? smooth : getNormal(t);
-    }
-
-    /**
-     * The barycentric weights of a triangle's three vertices at a point of it (of its plane).
-     *
-     * @param t     the triangle
-     * @param point the point
-     * @return {w1, w2, w3}, summing to 1
-     */
-    private double[] weights(int t, Point3D point) {
-        double[] data = new double[TRIANGLE_DATA];
-        double[] foot = new double[Triangle.PROJECTION];
-        triangleData(t, data, 0);
-        Triangle.project(data, point.getX(), point.getY(), point.getZ(), foot);
-        return new double[] { 1 - foot[0] - foot[1], foot[0], foot[1] };
+        return nearest;
     }
 
     /**

@@ -11,6 +11,7 @@ import primitives.Color;
 import primitives.Material;
 import primitives.Point3D;
 import primitives.Ray;
+import primitives.Texture;
 import primitives.Vector;
 import scene.Scene;
 
@@ -20,7 +21,8 @@ import static primitives.Util.alignZero;
  * The course's ray tracer: Phong local lighting with shadows that let light through transparent
  * bodies, plus reflection and refraction traced recursively: straight through, as in the course, or
  * bent by Snell's law for a material with an index of refraction (see {@link Material#setIor}; its
- * shadows stay the course's, kT through each surface).
+ * shadows stay the course's, kT through each surface). A textured body's colour at a point tints its
+ * diffuse reflection and its emission ({@link geometries.Geometry#setTexture}).
  */
 public class RayTracerBasic extends RayTracerBase {
     /** The deepest recursion of reflected and refracted rays. */
@@ -30,6 +32,10 @@ public class RayTracerBasic extends RayTracerBase {
     private static final double INITIAL_K = 1.0;
     /** The grid of one jittered spread ray: a glossy or blurry surface met inside another's beam. */
     private static final JitteredGrid SINGLE_SPREAD_RAY = new JitteredGrid(1);
+    /** The tint of a body without a texture: its diffuse factor and emission as they are. */
+    private static final Color NO_TINT = new Color(1, 1, 1);
+    /** The level of a texture's colour that leaves the light as it is. */
+    private static final double TEXTURE_WHITE = 255;
 
     private volatile BoundingVolumeHierarchy accelerator;
     private boolean bruteForce;
@@ -110,7 +116,16 @@ public class RayTracerBasic extends RayTracerBase {
 
     private Color calcColor(GeoPoint geoPoint, Ray ray, int level, double k, ThreadState state) {
         Vector n = geoPoint.getNormal();
-        Color color = geoPoint.geometry.getEmission().add(calcLocalEffects(geoPoint, ray.getDir(), n, k, state));
+        Texture texture = geoPoint.geometry.getTexture();
+        Color emission = geoPoint.geometry.getEmission();
+        Color tint = NO_TINT;
+        if (texture != null) {
+            double[] uv = geoPoint.getUV();
+            tint = texture.getColor(uv[0], uv[1]).reduce(TEXTURE_WHITE);
+            emission = new Color(emission.getR() * tint.getR(), emission.getG() * tint.getG(),
+                    emission.getB() * tint.getB());
+        }
+        Color color = emission.add(calcLocalEffects(geoPoint, ray.getDir(), n, tint, k, state));
         if (level == 1)
             return color;
         Color global = calcGlobalEffects(geoPoint, ray.getDir(), n, level, k, state);
@@ -122,8 +137,10 @@ public class RayTracerBasic extends RayTracerBase {
      * Diffuse and specular light from every light source that reaches the point. The sum is kept in
      * raw components, with the same arithmetic as adding the lights' {@link Color}s: each light's
      * intensity scaled by its transparency, then by the diffuse and the specular factor, both added.
+     * A texture's tint multiplies the diffuse factor channel by channel ({@link #NO_TINT}, 1, for a
+     * body without one: the same numbers as without the tint).
      */
-    private Color calcLocalEffects(GeoPoint geoPoint, Vector v, Vector n, double k, ThreadState state) {
+    private Color calcLocalEffects(GeoPoint geoPoint, Vector v, Vector n, Color tint, double k, ThreadState state) {
         double nv = viewSide(geoPoint, n, v);
         if (nv == 0)
             return Color.BLACK;
@@ -143,9 +160,9 @@ public class RayTracerBasic extends RayTracerBase {
                     double lightR = scaled(intensity.getR(), ktr);
                     double lightG = scaled(intensity.getG(), ktr);
                     double lightB = scaled(intensity.getB(), ktr);
-                    r = r + scaled(lightR, kd) + scaled(lightR, ks);
-                    g = g + scaled(lightG, kd) + scaled(lightG, ks);
-                    b = b + scaled(lightB, kd) + scaled(lightB, ks);
+                    r = r + scaled(lightR, kd * tint.getR()) + scaled(lightR, ks);
+                    g = g + scaled(lightG, kd * tint.getG()) + scaled(lightG, ks);
+                    b = b + scaled(lightB, kd * tint.getB()) + scaled(lightB, ks);
                 }
             }
         }

@@ -1,5 +1,6 @@
 package geometries;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
@@ -198,6 +199,37 @@ class MeshShadingTest {
         // TC12: a light along the surface (l ⊥ the smooth normal) leaves the point as it is
         MeshPoint atTwo = new MeshPoint(patch(), 0, new Point3D(1, 0, 0));
         assertSame(atTwo.point, atTwo.getShadowPoint(new Vector(1, 0, -1)), "TC12: a light along the surface");
+    }
+
+    /** Test method for {@link TriangleMesh#setUVs(double[])}, {@link MeshPoint#getUV()} and {@link TriangleMesh#getUV(Point3D)}. */
+    @Test
+    void testUVs() {
+        TriangleMesh mesh = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, new int[] { 0, 1, 2 });
+        // ===== Equivalence Partitions Tests =====
+        // TC01: none by default; set, a copy is kept
+        assertNull(mesh.getUVs(), "TC01: no UVs by default");
+        double[] uvs = { 0.2, 0.1, 0.8, 0.1, 0.2, 0.9 };
+        assertSame(mesh, mesh.setUVs(uvs), "TC01: setUVs must return the mesh");
+        uvs[0] = 5;
+        assertEquals(0.2, mesh.getUVs()[0], 0, "TC01: the mesh must keep its own copy");
+        // TC02: at the centroid, the mean of the three UVs: (0.4, 11/30)
+        assertArrayEquals(new double[] { 0.4, 1.1 / 3 }, hitFromAbove(mesh, 1.0 / 3, 1.0 / 3).getUV(), DELTA,
+                "TC02: at the centroid");
+        assertArrayEquals(new double[] { 0.4, 1.1 / 3 }, mesh.getUV(new Point3D(1.0 / 3, 1.0 / 3, 0)), DELTA,
+                "TC02: getUV(point)");
+        // TC03: the wrong length, a NaN (naming its vertex), null
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> mesh.setUVs(new double[4]),
+                "TC03: too few"), "6 numbers", "TC03");
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> mesh.setUVs(new double[] { 0, 0, 0, 0, Double.NaN, 0 }), "TC03: NaN"), "vertex 2", "TC03");
+        assertThrows(IllegalArgumentException.class, () -> mesh.setUVs(null), "TC03: null");
+        // ===== Boundary Values Tests =====
+        // TC11: at a vertex its own UV; at the middle of an edge the mean of its two
+        assertArrayEquals(new double[] { 0.8, 0.1 }, mesh.getUV(new Point3D(1, 0, 0)), DELTA, "TC11: at vertex 2");
+        assertArrayEquals(new double[] { 0.5, 0.5 }, mesh.getUV(new Point3D(0.5, 0.5, 0)), DELTA, "TC11: an edge");
+        // TC12: a mesh without UVs has no surface coordinates
+        TriangleMesh bare = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, new int[] { 0, 1, 2 });
+        assertThrows(UnsupportedOperationException.class, () -> bare.getUV(new Point3D(0.2, 0.2, 0)), "TC12");
     }
 
     // ===== pictures =====
