@@ -13,7 +13,9 @@ import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
+import primitives.CheckerTexture;
 import primitives.Color;
+import primitives.ImageTexture;
 import primitives.Material;
 import primitives.Point3D;
 import primitives.Vector;
@@ -21,6 +23,7 @@ import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.Render;
 import scene.Scene;
+import scenefile.ObjMesh;
 import scenefile.Picture;
 import scenefile.RenderSettings;
 
@@ -65,7 +68,10 @@ public final class Gallery {
                 trianglesTransparentSphere(),
                 glossyFloorFrostedPane(),
                 depthOfField(),
-                adaptiveSuperSampling());
+                adaptiveSuperSampling(),
+                spotSmoothFlat(),
+                glassSphereChecker(),
+                fresnelPane());
     }
 
     /**
@@ -319,5 +325,85 @@ public final class Gallery {
                 .setVpSize(300, 200).setVpDistance(500);
         return new Picture("glossyFloorFrostedPane", 600, 400, scene, camera, 0,
                 RenderSettings.DEFAULT.withSoftShadows(true).withSqrtBeamNum(4));
+    }
+
+    /** The folder of the public-domain model Spot (Keenan Crane): its OBJ file and its texture. */
+    private static final Path SPOT = Path.of("scenes", "models", "spot");
+
+    /**
+     * Smooth shading and textures: Spot, the cow, read with its texture coordinates and its texture,
+     * twice: flat (left, every triangle one shade) and smooth (right, normals computed from its faces).
+     */
+    private static Picture spotSmoothFlat() {
+        Scene scene = new Scene("smooth and flat Spot").setBackground(new Color(30, 36, 52))
+                .setAmbientLight(new AmbientLight(WHITE, 0.08));
+        ImageTexture texture = new ImageTexture(SPOT.resolve("spot_texture.png"));
+        Material matte = new Material().setKd(0.75).setKs(0.15).setShininess(30);
+        for (ObjMesh.Normals normals : new ObjMesh.Normals[] { ObjMesh.Normals.FLAT, ObjMesh.Normals.SMOOTH })
+            scene.geometries.add(ObjMesh.readMesh(SPOT.resolve("spot_triangulated.obj"), 60,
+                    normals == ObjMesh.Normals.FLAT ? new Point3D(34, 0, 25) : new Point3D(-34, 0, -25), normals)
+                    .setEmission(new Color(40, 40, 40)).setMaterial(matte).setTexture(texture));
+        scene.geometries.add(new Plane(new Point3D(0, -44.3, 0), new Vector(0, 1, 0)).setEmission(new Color(20, 20, 24))
+                .setMaterial(new Material().setKd(0.5)));
+        scene.lights.add(new PointLight(new Color(600, 580, 540), new Point3D(260, 280, -60)).setKl(0.0005)
+                .setKq(0.000001));
+        // from the front right, looking at the cows' heads (Spot faces −z)
+        Camera camera = new Camera(new Point3D(210, 80, -290), new Vector(-0.6, -0.2, 0.8), new Vector(-0.12, 1, 0.16))
+                .setVpSize(180, 120).setVpDistance(360);
+        return new Picture("spotSmoothFlat", 600, 400, scene, camera);
+    }
+
+    /**
+     * Real glass: a glass sphere of ior 1.5 on a checkerboard floor; through it, as through a lens, the
+     * floor shows upside down.
+     */
+    private static Picture glassSphereChecker() {
+        Scene scene = new Scene("glass sphere on chequers").setBackground(new Color(60, 80, 120));
+        scene.geometries.add(chequeredFloor(-40),
+                new Sphere(new Point3D(0, 0, 0), 40).setMaterial(new Material().setKt(0.95).setKs(0.6)
+                        .setShininess(300).setIor(1.5)));
+        scene.lights.add(new PointLight(new Color(500, 490, 470), new Point3D(-150, 250, 200)).setKl(0.0008));
+        Camera camera = new Camera(new Point3D(0, 60, 330), new Vector(0, -0.2, -1), new Vector(0, 1, -0.2))
+                .setVpSize(180, 120).setVpDistance(330);
+        return new Picture("glassSphereChecker", 600, 400, scene, camera);
+    }
+
+    /**
+     * Fresnel: a glass pane (ior 1.5, Schlick's split of its transparency) seen along its length. Near the
+     * camera the view meets it steeply and sees through it, to the red sphere behind; far off it meets it
+     * at grazing angles and the pane mirrors the blue sphere in front of it.
+     */
+    private static Picture fresnelPane() {
+        Scene scene = new Scene("Fresnel pane").setBackground(new Color(60, 80, 120));
+        Material glass = new Material().setKt(1).setKs(0.5).setShininess(200).setIor(1.5).setFresnel(true);
+        double x0 = -20;
+        double x1 = -16;
+        Point3D[] low = { new Point3D(x0, -40, 250), new Point3D(x1, -40, 250), new Point3D(x1, -40, -450),
+                new Point3D(x0, -40, -450) };
+        Point3D[] high = { new Point3D(x0, 60, 250), new Point3D(x1, 60, 250), new Point3D(x1, 60, -450),
+                new Point3D(x0, 60, -450) };
+        scene.geometries.add(chequeredFloor(-40),
+                // the pane's six faces, each counter-clockwise seen from outside
+                new Polygon(low[3], low[2], low[1], low[0]).setMaterial(glass),
+                new Polygon(high[0], high[1], high[2], high[3]).setMaterial(glass),
+                new Polygon(low[0], low[1], high[1], high[0]).setMaterial(glass),
+                new Polygon(low[2], low[3], high[3], high[2]).setMaterial(glass),
+                new Polygon(low[1], low[2], high[2], high[1]).setMaterial(glass),
+                new Polygon(low[3], low[0], high[0], high[3]).setMaterial(glass),
+                new Sphere(new Point3D(-75, -15, 150), 25).setEmission(new Color(150, 30, 30))
+                        .setMaterial(new Material().setKd(0.5).setKs(0.4).setShininess(60)),
+                new Sphere(new Point3D(10, -10, -150), 30).setEmission(new Color(30, 50, 150))
+                        .setMaterial(new Material().setKd(0.5).setKs(0.4).setShininess(60)));
+        scene.lights.add(new PointLight(new Color(500, 490, 470), new Point3D(100, 250, 200)).setKl(0.0008));
+        Camera camera = new Camera(new Point3D(60, 30, 300), new Vector(-0.5, -0.1, -1), new Vector(-0.04, 1, -0.08))
+                .setVpSize(240, 160).setVpDistance(300);
+        return new Picture("fresnelPane", 600, 400, scene, camera);
+    }
+
+    /** A floor of light and dark squares of 20, a checkerboard texture on a plane at height y. */
+    private static Plane chequeredFloor(double y) {
+        return (Plane) new Plane(new Point3D(0, y, 0), new Vector(0, 1, 0)).setEmission(new Color(40, 40, 40))
+                .setMaterial(new Material().setKd(0.7))
+                .setTexture(new CheckerTexture(new Color(235, 230, 220), new Color(60, 60, 70), 20));
     }
 }

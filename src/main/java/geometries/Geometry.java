@@ -6,6 +6,7 @@ import java.util.List;
 
 import primitives.Color;
 import primitives.Material;
+import primitives.Texture;
 import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
@@ -13,7 +14,8 @@ import primitives.Vector;
 import static primitives.Util.requireNonNull;
 
 /**
- * A single body with a surface: it has an emission colour, a material and a normal at each point.
+ * A single body with a surface: it has an emission colour, a material and a normal at each point, and
+ * may have a texture, looked up at the surface coordinates (u, v) of each point ({@link #getUV}).
  */
 public abstract class Geometry extends Intersectable {
     /** What {@link #nearestHit} returns when the ray misses. */
@@ -21,6 +23,7 @@ public abstract class Geometry extends Intersectable {
 
     private Color emission = Color.BLACK;
     private Material material = new Material();
+    private Texture texture;
 
     /** Creates a body with black emission and the default material (all factors 0). */
     protected Geometry() {
@@ -64,6 +67,52 @@ public abstract class Geometry extends Intersectable {
     public Geometry setMaterial(Material material) {
         this.material = requireNonNull(material, "material");
         return this;
+    }
+
+    /** {@return the texture, or null when the body has none (one colour: its emission and material)} */
+    public Texture getTexture() {
+        return texture;
+    }
+
+    /**
+     * Gives the body a texture: its colour at each point. The texture tints the diffuse reflection (the
+     * texture's colour over 255 multiplies kD channel by channel), and the emission is the texture's
+     * colour scaled by the body's emission (emission · colour / 255), so the texture shows in light and,
+     * darker, in shadow.
+     *
+     * @param texture the texture
+     * @return this geometry
+     * @throws IllegalArgumentException when the texture is null or the body has no surface coordinates
+     *                                  (a tube, a cylinder, a mesh without UVs)
+     */
+    public Geometry setTexture(Texture texture) {
+        requireNonNull(texture, "texture");
+        if (!hasUV())
+            throw new IllegalArgumentException("a texture needs surface coordinates, and " + this + " has none"
+                    + (this instanceof TriangleMesh ? " (give the mesh UVs first: setUVs, or an OBJ file with vt)" : ""));
+        this.texture = texture;
+        return this;
+    }
+
+    /**
+     * Whether the body has surface coordinates for a texture ({@link #getUV}). The default says no.
+     *
+     * @return true when {@link #getUV} answers
+     */
+    protected boolean hasUV() {
+        return false;
+    }
+
+    /**
+     * The surface coordinates (u, v) of a point on the body, where a texture is looked up. The default
+     * has none; bodies with them override this and {@link #hasUV}.
+     *
+     * @param point a point on the surface
+     * @return {u, v}
+     * @throws UnsupportedOperationException when the body has no surface coordinates
+     */
+    public double[] getUV(Point3D point) {
+        throw new UnsupportedOperationException(this + " has no surface coordinates");
     }
 
     // The fast path of the acceleration structure: a ray's numbers in a RayState (origin o, unit

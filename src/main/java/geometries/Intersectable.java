@@ -49,6 +49,28 @@ public abstract class Intersectable {
             return geometry.getNormal(point);
         }
 
+        /**
+         * The surface coordinates of the point, where the body's texture is looked up: the geometry's
+         * there ({@link Geometry#getUV}). A {@link TriangleMesh} answers with the UVs of the triangle hit.
+         *
+         * @return {u, v}
+         * @throws UnsupportedOperationException when the body has no surface coordinates
+         */
+        public double[] getUV() {
+            return geometry.getUV(point);
+        }
+
+        /**
+         * The point the shadow rays toward a light leave from: the hit point itself, except on a smooth
+         * {@link TriangleMesh}, whose flat triangles lie below the surface their normals describe.
+         *
+         * @param l the unit direction from the light to the point
+         * @return the point shadow rays start from (before they move {@link primitives.Ray#DELTA} off the surface)
+         */
+        public Point3D getShadowPoint(Vector l) {
+            return point;
+        }
+
         /** Equal when they name the same geometry object and equal points. */
         @Override
         public boolean equals(Object obj) {

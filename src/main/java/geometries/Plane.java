@@ -90,6 +90,48 @@ public class Plane extends Geometry {
     }
 
     @Override
+    protected boolean hasUV() {
+        return true;
+    }
+
+    /**
+     * {@inheritDoc} The point's position in the plane, in scene units, from q0 along two unit axes of the
+     * plane: u along the coordinate axis most across the normal (x, y or z, the first of equals),
+     * projected onto the plane; v along normal × u. A floor facing +y has u along +x and v along −z.
+     */
+    @Override
+    public double[] getUV(Point3D point) {
+        // the coordinate axis most across the normal, minus its part along the normal
+        double[] u = nx * nx <= ny * ny && nx * nx <= nz * nz ? new double[] { 1 - nx * nx, -nx * ny, -nx * nz }
+                : ny * ny <= nz * nz ? new double[] { -ny * nx, 1 - ny * ny, -ny * nz }
+                : new double[] { -nz * nx, -nz * ny, 1 - nz * nz };
+        double length = Math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        for (int k = 0; k < 3; ++k)
+            u[k] /= length;
+        return planeUV(point, q0, u, normal);
+    }
+
+    /**
+     * The coordinates of a point in a plane from an origin in it, along a unit u axis of the plane and
+     * along normal × u.
+     *
+     * @param point  the point
+     * @param origin the origin of the coordinates
+     * @param u      the unit u axis, in the plane: x, y, z
+     * @param normal the plane's unit normal
+     * @return {u, v}
+     */
+    static double[] planeUV(Point3D point, Point3D origin, double[] u, Vector normal) {
+        double dx = point.getX() - origin.getX();
+        double dy = point.getY() - origin.getY();
+        double dz = point.getZ() - origin.getZ();
+        double vx = normal.getY() * u[2] - normal.getZ() * u[1];
+        double vy = normal.getZ() * u[0] - normal.getX() * u[2];
+        double vz = normal.getX() * u[1] - normal.getY() * u[0];
+        return new double[] { dx * u[0] + dy * u[1] + dz * u[2], dx * vx + dy * vy + dz * vz };
+    }
+
+    @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         return singleHit(ray, maxDistance);
     }

@@ -167,6 +167,26 @@ public class Polygon extends Geometry {
         return plane.getNormal();
     }
 
+    @Override
+    protected boolean hasUV() {
+        return true;
+    }
+
+    /**
+     * {@inheritDoc} The point's position in the polygon's plane, in scene units, from its first vertex:
+     * u along its first edge, v along normal × u (for a polygon counter-clockwise seen from its normal's
+     * side, v points into it).
+     */
+    @Override
+    public double[] getUV(Point3D point) {
+        double ux = vertexCoordinates[3] - vertexCoordinates[0];
+        double uy = vertexCoordinates[4] - vertexCoordinates[1];
+        double uz = vertexCoordinates[5] - vertexCoordinates[2];
+        double length = Math.sqrt(ux * ux + uy * uy + uz * uz);
+        return Plane.planeUV(point, vertices.get(0), new double[] { ux / length, uy / length, uz / length },
+                plane.getNormal());
+    }
+
     /**
      * The course's query: the polygon is open, so a ray through an edge, a vertex or an edge's
      * continuation gives null.

@@ -67,6 +67,26 @@ public class Sphere extends Geometry {
     }
 
     @Override
+    protected boolean hasUV() {
+        return true;
+    }
+
+    /**
+     * {@inheritDoc} Longitude and latitude, each as a fraction of its whole: u = 0.5 + φ / 2π with φ the
+     * angle around the y axis from the +z side (φ = atan2(x, z) of the point seen from the centre), so that
+     * u runs from 0 to 1 around the sphere with 0.5 on its +z side; v = 0.5 + θ / π with θ the latitude
+     * (asin(y / radius)), 0 at the bottom pole and 1 at the top.
+     */
+    @Override
+    public double[] getUV(Point3D point) {
+        double x = point.getX() - cx;
+        double y = point.getY() - cy;
+        double z = point.getZ() - cz;
+        double sin = Math.max(-1, Math.min(1, y / Math.sqrt(x * x + y * y + z * z)));
+        return new double[] { 0.5 + Math.atan2(x, z) / (2 * Math.PI), 0.5 + Math.asin(sin) / Math.PI };
+    }
+
+    @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         RayState numbers = toRayState(ray, maxDistance);
         return hitsAt(ray, root(numbers, -1), root(numbers, 1), maxDistance);

@@ -27,6 +27,13 @@ import static primitives.Util.requireNonNull;
  * {@link Triangle}'s: (p2 − p1) × (p3 − p2), normalised. The {@link BoundingVolumeHierarchy} holds
  * a mesh's triangles as its own bodies, by index. A hit on a mesh is a {@link MeshPoint}, which
  * knows its triangle, so {@link GeoPoint#getNormal()} gives that triangle's normal.
+ * <p>
+ * A mesh is flat until it is given a normal per vertex ({@link #setNormals}, or {@link #smoothNormals}
+ * to compute them): then it is smooth, and the normal of a hit is its triangle's vertex normals mixed
+ * by the hit's barycentric weights, normalised, found when the hit is shaded (the intersection tests
+ * never read the normals). The shadow rays of a hit on a smooth mesh leave from the point lifted onto
+ * the curved surface the normals describe ({@link GeoPoint#getShadowPoint}), so that a coarse mesh
+ * shows no shadow-terminator artefacts (see {@link MeshShading}).
  */
 public final class TriangleMesh extends Geometry {
     /** The number of doubles of a triangle's data for {@link #triangleData}. */
@@ -45,6 +52,8 @@ public final class TriangleMesh extends Geometry {
     /** The box around every point the renderer's test of a triangle accepts. */
     private final double[] box = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+    /** The vertices' normals, when the mesh is smooth. */
+    private final MeshShading shading;
 
     /**
      * A hit on a mesh: the point, the mesh and the triangle of the mesh the point lies on.
@@ -52,6 +61,8 @@ public final class TriangleMesh extends Geometry {
     public static final class MeshPoint extends GeoPoint {
         /** The index of the triangle hit, in the mesh's order. */
         public final int triangle;
+        /** The barycentric weights of the triangle's vertices at the point, found when first needed. */
+        private double[] weights;
 
         /**
          * Pairs a mesh and one of its triangles with a point on it.
@@ -65,10 +76,34 @@ public final class TriangleMesh extends Geometry {
             this.triangle = triangle;
         }
 
-        /** {@return the unit normal of the triangle hit} */
+        /** {@return the unit normal of the triangle hit, or on a smooth mesh the smooth normal at the point} */
         @Override
         public Vector getNormal() {
-            return ((TriangleMesh) geometry).getNormal(triangle);
+            TriangleMesh mesh = (TriangleMesh) geometry;
+            return mesh.isSmooth() ? mesh.shading.normal(triangle, weights()) : mesh.getNormal(triangle);
+        }
+
+        /**
+         * {@inheritDoc} On a smooth mesh, the point lifted onto the tangent planes of the triangle's
+         * vertices that it lies below, seen from the light's side (see {@link MeshShading}).
+         */
+        @Override
+        public Point3D getShadowPoint(Vector l) {
+            TriangleMesh mesh = (TriangleMesh) geometry;
+            return mesh.isSmooth() ? mesh.shading.shadowPoint(triangle, weights(), point, l) : point;
+        }
+
+        /** {@return the UVs of the triangle's vertices mixed by the point's barycentric weights} */
+        @Override
+        public double[] getUV() {
+            return ((TriangleMesh) geometry).shading.uv(triangle, weights());
+        }
+
+        /** {@return the barycentric weights of the triangle's vertices at the point} */
+        private double[] weights() {
+            if (weights == null)
+                weights = ((TriangleMesh) geometry).shading.weights(triangle, point);
+            return weights;
         }
 
         @Override
@@ -119,6 +154,80 @@ public final class TriangleMesh extends Geometry {
                 box[3 + k] = Math.max(box[3 + k], triangleBox[3 + k]);
             }
         }
+        this.shading = new MeshShading(this, this.vertices, this.indices);
+    }
+
+    /**
+     * Makes the mesh smooth with the given vertex normals (copied).
+     *
+     * @param normals one unit normal per vertex, x, y and z of each in turn (outward, as the triangles'
+     *                normals are, for a light to shade the side it faces)
+     * @return this mesh
+     * @throws IllegalArgumentException when the array is null, its length is not three times the
+     *                                  number of vertices, or a normal is not a unit vector (NaN or
+     *                                  infinite included; the message names the vertex)
+     */
+    public TriangleMesh setNormals(double[] normals) {
+        shading.setNormals(normals);
+        return this;
+    }
+
+    /**
+     * Makes the mesh smooth with vertex normals computed from its triangles: at each vertex, the
+     * normals of the triangles around it weighted by their angles there, normalised. The vertices of a
+     * sharp edge should not be shared by its two sides, or the edge is rounded too.
+     *
+     * @return this mesh
+     */
+    public TriangleMesh smoothNormals() {
+        shading.computeNormals();
+        return this;
+    }
+
+    /** {@return true when the mesh has vertex normals, false when it is flat} */
+    public boolean isSmooth() {
+        return shading.isSmooth();
+    }
+
+    /** {@return a copy of the vertex normals, three numbers per vertex, or null when the mesh is flat} */
+    public double[] getNormals() {
+        return shading.getNormals();
+    }
+
+    /**
+     * Gives the vertices surface coordinates (copied), which a texture is looked up at: a point of a
+     * triangle has its vertices' UVs mixed by its barycentric weights.
+     *
+     * @param uvs u and v of each vertex in turn (as an OBJ file's vt: the image's bottom left at (0, 0),
+     *            its top right at (1, 1))
+     * @return this mesh
+     * @throws IllegalArgumentException when the array is null, its length is not twice the number of
+     *                                  vertices, or a coordinate is not finite (the message names the vertex)
+     */
+    public TriangleMesh setUVs(double[] uvs) {
+        shading.setUVs(uvs);
+        return this;
+    }
+
+    /** {@return a copy of the vertices' UVs, two numbers per vertex, or null when the mesh has none} */
+    public double[] getUVs() {
+        return shading.getUVs();
+    }
+
+    /** {@return true once the mesh has UVs} */
+    @Override
+    protected boolean hasUV() {
+        return shading.hasUVs();
+    }
+
+    /**
+     * {@inheritDoc} The UVs of the triangle the point lies on, mixed by its barycentric weights there
+     * (every triangle is searched, as by {@link #getNormal(Point3D)}).
+     */
+    @Override
+    public double[] getUV(Point3D point) {
+        int t = nearestTriangle(point);
+        return shading.uv(t, shading.weights(t, point));
     }
 
     /**
@@ -246,15 +355,26 @@ public final class TriangleMesh extends Geometry {
 
     /**
      * The unit normal at a point of the mesh: that of the triangle the point lies on (of the nearest
-     * to it, on an edge two triangles share). Every triangle is searched; a renderer gets the normal
-     * from the hit, {@link MeshPoint#getNormal()}, instead.
+     * to it, on an edge two triangles share), or on a smooth mesh the smooth normal there. Every
+     * triangle is searched; a renderer gets the normal from the hit, {@link MeshPoint#getNormal()},
+     * instead.
      *
      * @param point a point on the mesh
-     * @return the normal of the triangle it lies on
+     * @return the normal of the triangle it lies on, or the smooth normal
      * @throws IllegalArgumentException when the point is null or lies on no triangle of the mesh
      */
     @Override
     public Vector getNormal(Point3D point) {
+        int nearest = nearestTriangle(point);
+        return isSmooth() ? shading.normal(nearest, shading.weights(nearest, point)) : getNormal(nearest);
+    }
+
+    /**
+     * The triangle a point lies on (the nearest to it, on an edge two triangles share).
+     *
+     * @throws IllegalArgumentException when the point is null or lies on no triangle of the mesh
+     */
+    private int nearestTriangle(Point3D point) {
         requireNonNull(point, "point");
         int nearest = -1;
         double nearestDistance = Double.POSITIVE_INFINITY;
@@ -267,7 +387,7 @@ public final class TriangleMesh extends Geometry {
         }
         if (nearest < 0)
             throw new IllegalArgumentException("point " + point + " lies on no triangle of the mesh");
-        return getNormal(nearest);
+        return nearest;
     }
 
     /**

@@ -1,6 +1,8 @@
 /**
  * The basic values every other package is built from: {@link primitives.Point3D}, {@link primitives.Vector},
- * {@link primitives.Ray}, {@link primitives.Color}, {@link primitives.Material}, the numeric helpers of
+ * {@link primitives.Ray}, {@link primitives.Color}, {@link primitives.Material}, the textures a body's colour
+ * may come from ({@link primitives.Texture}: {@link primitives.ImageTexture}, {@link primitives.CheckerTexture}),
+ * the numeric helpers of
  * {@link primitives.Util}, and {@link primitives.Parallel}, which shares work among threads (the render's
  * tiles, the hierarchy's build).
  * <p>

@@ -4,12 +4,14 @@ import accel.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
 import geometries.Triangle;
 import geometries.TriangleMesh;
+import geometries.TriangleMesh.MeshPoint;
 import lighting.AreaLightSource;
 import lighting.LightSource;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point3D;
 import primitives.Ray;
+import primitives.Texture;
 import primitives.Vector;
 import scene.Scene;
 
@@ -17,7 +19,10 @@ import static primitives.Util.alignZero;
 
 /**
  * The course's ray tracer: Phong local lighting with shadows that let light through transparent
- * bodies, plus reflection and straight-through refraction traced recursively.
+ * bodies, plus reflection and refraction traced recursively: straight through, as in the course, or
+ * bent by Snell's law for a material with an index of refraction (see {@link Material#setIor}; its
+ * shadows stay the course's, kT through each surface). A textured body's colour at a point tints its
+ * diffuse reflection and its emission ({@link geometries.Geometry#setTexture}).
  */
 public class RayTracerBasic extends RayTracerBase {
     /** The deepest recursion of reflected and refracted rays. */
@@ -27,6 +32,10 @@ public class RayTracerBasic extends RayTracerBase {
     private static final double INITIAL_K = 1.0;
     /** The grid of one jittered spread ray: a glossy or blurry surface met inside another's beam. */
     private static final JitteredGrid SINGLE_SPREAD_RAY = new JitteredGrid(1);
+    /** The tint of a body without a texture: its diffuse factor and emission as they are. */
+    private static final Color NO_TINT = new Color(1, 1, 1);
+    /** The level of a texture's colour that leaves the light as it is. */
+    private static final double TEXTURE_WHITE = 255;
 
     private volatile BoundingVolumeHierarchy accelerator;
     private boolean bruteForce;
@@ -107,7 +116,16 @@ public class RayTracerBasic extends RayTracerBase {
 
     private Color calcColor(GeoPoint geoPoint, Ray ray, int level, double k, ThreadState state) {
         Vector n = geoPoint.getNormal();
-        Color color = geoPoint.geometry.getEmission().add(calcLocalEffects(geoPoint, ray.getDir(), n, k, state));
+        Texture texture = geoPoint.geometry.getTexture();
+        Color emission = geoPoint.geometry.getEmission();
+        Color tint = NO_TINT;
+        if (texture != null) {
+            double[] uv = geoPoint.getUV();
+            tint = texture.getColor(uv[0], uv[1]).reduce(TEXTURE_WHITE);
+            emission = new Color(emission.getR() * tint.getR(), emission.getG() * tint.getG(),
+                    emission.getB() * tint.getB());
+        }
+        Color color = emission.add(calcLocalEffects(geoPoint, ray.getDir(), n, tint, k, state));
         if (level == 1)
             return color;
         Color global = calcGlobalEffects(geoPoint, ray.getDir(), n, level, k, state);
@@ -119,9 +137,11 @@ public class RayTracerBasic extends RayTracerBase {
      * Diffuse and specular light from every light source that reaches the point. The sum is kept in
      * raw components, with the same arithmetic as adding the lights' {@link Color}s: each light's
      * intensity scaled by its transparency, then by the diffuse and the specular factor, both added.
+     * A texture's tint multiplies the diffuse factor channel by channel ({@link #NO_TINT}, 1, for a
+     * body without one: the same numbers as without the tint).
      */
-    private Color calcLocalEffects(GeoPoint geoPoint, Vector v, Vector n, double k, ThreadState state) {
-        double nv = alignZero(n.dotProduct(v));
+    private Color calcLocalEffects(GeoPoint geoPoint, Vector v, Vector n, Color tint, double k, ThreadState state) {
+        double nv = viewSide(geoPoint, n, v);
         if (nv == 0)
             return Color.BLACK;
         Material material = geoPoint.geometry.getMaterial();
@@ -140,14 +160,40 @@ public class RayTracerBasic extends RayTracerBase {
                     double lightR = scaled(intensity.getR(), ktr);
                     double lightG = scaled(intensity.getG(), ktr);
                     double lightB = scaled(intensity.getB(), ktr);
-                    r = r + scaled(lightR, kd) + scaled(lightR, ks);
-                    g = g + scaled(lightG, kd) + scaled(lightG, ks);
-                    b = b + scaled(lightB, kd) + scaled(lightB, ks);
+                    r = r + scaled(lightR, kd * tint.getR()) + scaled(lightR, ks);
+                    g = g + scaled(lightG, kd * tint.getG()) + scaled(lightG, ks);
+                    b = b + scaled(lightB, kd * tint.getB()) + scaled(lightB, ks);
                 }
             }
         }
         // the components are sums of non-negative terms: kept at the largest double at the end, as after each sum
         return new Color(Math.min(r, Double.MAX_VALUE), Math.min(g, Double.MAX_VALUE), Math.min(b, Double.MAX_VALUE));
+    }
+
+    /**
+     * Which side of the surface the viewer is on: n·v. On a smooth mesh the smooth normal may turn away
+     * from a viewer that the triangle under it faces (near a silhouette); the viewer's side is then
+     * the triangle's, where the viewer really is, so those points are lit and not left black.
+     *
+     * @return a number of the sign of the viewer's side (as v·n: negative on the side n points to), or 0
+     */
+    private static double viewSide(GeoPoint geoPoint, Vector n, Vector v) {
+        return alignZero(sideNormal(geoPoint, n, v).dotProduct(v));
+    }
+
+    /**
+     * The normal that tells which side of the surface a ray comes from: n, except on a smooth mesh
+     * where the smooth normal n and the triangle's disagree about it (or n runs along the ray): the
+     * triangle's.
+     */
+    private static Vector sideNormal(GeoPoint geoPoint, Vector n, Vector v) {
+        if (geoPoint instanceof MeshPoint hit && hit.geometry instanceof TriangleMesh mesh && mesh.isSmooth()) {
+            double nv = alignZero(n.dotProduct(v));
+            Vector flat = mesh.getNormal(hit.triangle);
+            if (alignZero(flat.dotProduct(v)) * nv < 0 || nv == 0)
+                return flat;
+        }
+        return n;
     }
 
     /** A colour component scaled as {@link Color#scale(double)} scales it: an overflow kept at the largest double. */
@@ -170,21 +216,35 @@ public class RayTracerBasic extends RayTracerBase {
     /**
      * Reflected and refracted light, each traced while its factor stays above the limit: one sharp
      * ray each from a mirror and clear glass, spread rays from glossy ({@code kG}) and blurry
-     * ({@code kB}) materials.
+     * ({@code kB}) materials. A material with an index of refraction bends the refracted ray by Snell's
+     * law; when the ray cannot leave (total internal reflection) its share kT goes to the reflection,
+     * and with Fresnel the share kT splits between the two by Schlick's approximation.
      */
     private Color calcGlobalEffects(GeoPoint geoPoint, Vector v, Vector n, int level, double k, ThreadState state) {
         Material material = geoPoint.geometry.getMaterial();
         Color color = Color.BLACK;
         double kR = material.getKr();
+        double kT = material.getKt();
+        Refraction refraction = null;
+        if (material.hasIor() && kT > 0) {
+            Vector side = sideNormal(geoPoint, n, v);
+            if (alignZero(side.dotProduct(v)) != 0) {
+                refraction = new Refraction(v, side, material.getIor());
+                double reflected = refraction.isTotal() ? 1 : material.isFresnel() ? refraction.reflectance() : 0;
+                kR += kT * reflected;
+                kT *= 1 - reflected;
+            }
+        }
         double kkr = k * kR;
         if (kkr > MIN_CALC_COLOR_K)
             color = calcSpreadEffect(geoPoint.point, constructReflectedRay(geoPoint.point, v, n), n,
                     material.getKg(), level, kR, kkr, state);
-        double kT = material.getKt();
         double kkt = k * kT;
-        if (kkt > MIN_CALC_COLOR_K)
-            color = color.add(calcSpreadEffect(geoPoint.point, constructRefractedRay(geoPoint.point, v, n), n,
-                    material.getKb(), level, kT, kkt, state));
+        if (kkt > MIN_CALC_COLOR_K) {
+            Ray refracted = refraction == null ? constructRefractedRay(geoPoint.point, v, n)
+                    : new Ray(geoPoint.point, refraction.direction(), n);
+            color = color.add(calcSpreadEffect(geoPoint.point, refracted, n, material.getKb(), level, kT, kkt, state));
+        }
         return color;
     }
 
@@ -278,7 +338,9 @@ public class RayTracerBasic extends RayTracerBase {
      * How much of a light reaches a point: 1 when nothing is in the way, 0 when an opaque body is,
      * and the product of the {@code kT} of the transparent bodies in between otherwise. With soft
      * shadows on and a light with an area, the average over rays to the light's square. Nothing is
-     * allocated: the rays live in the calling thread's {@link LightSquare}.
+     * allocated: the rays live in the calling thread's {@link LightSquare}. The rays leave from the
+     * hit's shadow point ({@link GeoPoint#getShadowPoint}): the point itself, or on a smooth mesh the
+     * point lifted onto the surface its normals describe.
      *
      * @param light    the light
      * @param l        the unit direction from the light to the point
@@ -289,7 +351,9 @@ public class RayTracerBasic extends RayTracerBase {
      */
     double transparency(LightSource light, Vector l, Vector n, GeoPoint geoPoint, ThreadState state) {
         BoundingVolumeHierarchy bvh = accelerator();
-        Point3D point = geoPoint.point;
+        Point3D point = geoPoint.getShadowPoint(l);
+        if (point != geoPoint.point)
+            l = light.getL(point);
         // the ray to the light itself, or to the centre of its square
         LightSquare square = state.lightSquare().setPoint(point, n, l, bvh, state.query(bvh))
                 .setOnTriangle(geoPoint.geometry instanceof TriangleMesh || geoPoint.geometry instanceof Triangle);

@@ -8,9 +8,13 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.NoSuchElementException;
+import java.util.function.Predicate;
 import java.util.regex.Pattern;
 
 import de.javagl.obj.FloatTuple;
@@ -28,9 +32,13 @@ import static primitives.Util.requirePositive;
  * Reads a triangle mesh from a Wavefront OBJ file (with the de.javagl:obj library) into a flat
  * {@link TriangleMesh}: the file's vertices once each, its triangles as indices into them.
  * <p>
- * Only the vertices ({@code v}) and the faces ({@code f}) count; texture coordinates, normals,
- * groups and materials are ignored. Face indices may be absolute (1-based) or relative (negative,
- * counted back from the last vertex read). The library reads coordinates as {@code float}s.
+ * The vertices ({@code v}) and the faces ({@code f}) make the mesh; groups and materials are ignored.
+ * When every face gives its corners texture coordinates ({@code vt}) the mesh gets them as UVs, and when
+ * every face gives its corners normals ({@code vn}) the mesh is smooth with them (see {@link Normals}
+ * for the choices); then each distinct corner of the file — a position with its texture coordinates
+ * and normal — becomes a vertex of the mesh, so a seam of the texture or a sharp edge keeps its two
+ * sides apart. Face indices may be absolute (1-based) or relative (negative, counted back from the last
+ * vertex, texture coordinate or normal read). The library reads coordinates as {@code float}s.
  * A face of more than three vertices is taken as a convex polygon and split into a fan of
  * triangles around its first vertex, which keeps the face's winding. A triangle that is degenerate
  * (coincident or collinear vertices, refused by {@link Triangle} and {@link TriangleMesh}) is
@@ -42,6 +50,20 @@ public final class ObjMesh {
     public static final int MAX_LINE_LENGTH = 1 << 20;
     /** How many characters are read at a time. */
     private static final int BUFFER_SIZE = 1 << 16;
+
+    /** Which normals a mesh read from a file gets. */
+    public enum Normals {
+        /** The file's normals ({@code vn}), smooth; flat when the file has none. */
+        FILE,
+        /**
+         * The file's normals, or when it has none, normals computed from the faces around each position
+         * ({@link TriangleMesh#smoothNormals()} on the file's positions, so that the mesh stays smooth
+         * across the seams of its texture).
+         */
+        SMOOTH,
+        /** None: the mesh is flat, whatever the file says. */
+        FLAT
+    }
 
     private ObjMesh() {
     }
@@ -87,24 +109,43 @@ public final class ObjMesh {
 
     /**
      * Reads the triangles of an OBJ file, scaled and moved: each vertex v of the file becomes
-     * position + scale·v. Degenerate triangles are skipped (see the class comment).
+     * position + scale·v. Degenerate triangles are skipped (see the class comment). The mesh has the
+     * file's texture coordinates and normals, when every face has them ({@link Normals#FILE}).
      *
      * @param file     the OBJ file
      * @param scale    the factor applied to every vertex, a finite positive number
      * @param position where the file's origin goes
      * @return the mesh of the file's vertices (each placed) and triangles, in the order of its faces
-     * @throws IllegalArgumentException when an argument is null, the scale is not a finite positive
-     *                                  number, the file is missing, unreadable or malformed (for
-     *                                  instance a bad number or a face index out of range), or it
-     *                                  has no triangle that is not degenerate
+     * @throws IllegalArgumentException as {@link #readMesh(Path, double, Point3D, Normals)}
      */
     public static TriangleMesh readMesh(Path file, double scale, Point3D position) {
+        return readMesh(file, scale, position, Normals.FILE);
+    }
+
+    /**
+     * Reads the triangles of an OBJ file, scaled and moved, with the normals asked for: each vertex v
+     * of the file becomes position + scale·v. Degenerate triangles are skipped (see the class comment).
+     *
+     * @param file     the OBJ file
+     * @param scale    the factor applied to every vertex, a finite positive number
+     * @param position where the file's origin goes
+     * @param normals  which normals the mesh gets
+     * @return the mesh of the file's vertices (each placed) and triangles, in the order of its faces
+     * @throws IllegalArgumentException when an argument is null, the scale is not a finite positive
+     *                                  number, the file is missing, unreadable or malformed (for
+     *                                  instance a bad number, a face index out of range or a normal
+     *                                  of length 0), or it has no triangle that is not degenerate
+     */
+    public static TriangleMesh readMesh(Path file, double scale, Point3D position, Normals normals) {
         requireNonNull(file, "OBJ file");
         requirePositive(scale, "scale of OBJ file " + file);
         requireNonNull(position, "position of OBJ file " + file);
+        requireNonNull(normals, "normals of OBJ file " + file);
 
         Obj obj = parse(file);
         Point3D[] vertices = vertices(obj, file, scale, position);
+        Corners corners = new Corners(obj, everyFace(obj, ObjFace::containsTexCoordIndices),
+                normals != Normals.FLAT && everyFace(obj, ObjFace::containsNormalIndices));
         int faceCount = obj.getNumFaces();
         int[] triangles = new int[3 * faceCount];
         int length = 0;
@@ -118,15 +159,29 @@ public final class ObjMesh {
                     continue; // skipped on purpose: see the class comment
                 if (length == triangles.length)
                     triangles = Arrays.copyOf(triangles, 2 * length);
-                triangles[length++] = first;
-                triangles[length++] = second;
-                triangles[length++] = third;
+                triangles[length++] = corners.vertex(face, 0);
+                triangles[length++] = corners.vertex(face, k);
+                triangles[length++] = corners.vertex(face, k + 1);
             }
         }
         if (length == 0)
             throw new IllegalArgumentException("OBJ file " + file + " has no triangles"
                     + (faceCount == 0 ? "" : " (all its " + faceCount + " faces are degenerate)"));
-        return new TriangleMesh(coordinates(vertices), Arrays.copyOf(triangles, length));
+        int[] kept = Arrays.copyOf(triangles, length);
+        double[] positions = coordinates(vertices);
+        TriangleMesh mesh = new TriangleMesh(corners.coordinates(positions), kept);
+        corners.shade(mesh, file);
+        if (normals == Normals.SMOOTH && !mesh.isSmooth())
+            corners.smoothAtPositions(mesh, positions, kept);
+        return mesh;
+    }
+
+    /** {@return whether every face of the file has this property} */
+    private static boolean everyFace(Obj obj, Predicate<ObjFace> property) {
+        for (int f = 0; f < obj.getNumFaces(); ++f)
+            if (!property.test(obj.getFace(f)))
+                return false;
+        return obj.getNumFaces() > 0;
     }
 
     /** {@return the points' coordinates, three doubles each} */
@@ -138,6 +193,115 @@ public final class ObjMesh {
             coordinates[3 * i + 2] = points[i].getZ();
         }
         return coordinates;
+    }
+
+    /**
+     * The vertices of a mesh read with texture coordinates or normals: each distinct corner of the file —
+     * a position with its texture coordinates and its normal — once, in the order the faces first use
+     * them. Without either, a corner is its position, and the vertices are the file's, as they are.
+     */
+    private static final class Corners {
+        private final Obj obj;
+        private final boolean uvs;
+        private final boolean normals;
+        private final Map<Corner, Integer> indices = new HashMap<>();
+        private final List<Corner> corners = new ArrayList<>();
+
+        /** A corner of a face: the file's indices (from 0) of its position, texture coordinates and normal (−1: none). */
+        private record Corner(int position, int uv, int normal) {
+        }
+
+        /**
+         * @param obj     the file, as the library read it
+         * @param uvs     whether the corners have texture coordinates
+         * @param normals whether they have normals
+         */
+        Corners(Obj obj, boolean uvs, boolean normals) {
+            this.obj = obj;
+            this.uvs = uvs;
+            this.normals = normals;
+        }
+
+        /** {@return whether a corner is more than its position} */
+        private boolean split() {
+            return uvs || normals;
+        }
+
+        /** {@return the mesh's vertex of corner k of a face} */
+        int vertex(ObjFace face, int k) {
+            if (!split())
+                return face.getVertexIndex(k);
+            Corner corner = new Corner(face.getVertexIndex(k), uvs ? face.getTexCoordIndex(k) : -1,
+                    normals ? face.getNormalIndex(k) : -1);
+            return indices.computeIfAbsent(corner, added -> {
+                corners.add(added);
+                return corners.size() - 1;
+            });
+        }
+
+        /** {@return the coordinates of the mesh's vertices, from those of the file's positions} */
+        double[] coordinates(double[] positions) {
+            if (!split())
+                return positions;
+            double[] xyz = new double[3 * corners.size()];
+            for (int i = 0; i < corners.size(); ++i)
+                System.arraycopy(positions, 3 * corners.get(i).position(), xyz, 3 * i, 3);
+            return xyz;
+        }
+
+        /** Gives the mesh the file's texture coordinates and normals, when its corners have them. */
+        void shade(TriangleMesh mesh, Path file) {
+            if (uvs) {
+                double[] uv = new double[2 * corners.size()];
+                for (int i = 0; i < corners.size(); ++i) {
+                    FloatTuple t = obj.getTexCoord(corners.get(i).uv());
+                    uv[2 * i] = t.getX();
+                    uv[2 * i + 1] = t.getDimensions() > 1 ? t.getY() : 0;
+                }
+                mesh.setUVs(uv);
+            }
+            if (normals) {
+                double[] xyz = new double[3 * corners.size()];
+                for (int i = 0; i < corners.size(); ++i) {
+                    int n = corners.get(i).normal();
+                    FloatTuple normal = obj.getNormal(n);
+                    double x = normal.getX();
+                    double y = normal.getY();
+                    double z = normal.getZ();
+                    double length = Math.sqrt(x * x + y * y + z * z);
+                    if (!(length > 0 && length < Double.POSITIVE_INFINITY))
+                        throw new IllegalArgumentException("bad OBJ file " + file + ": normal " + (n + 1) + " (vn) "
+                                + normal + " has no direction (its length is " + length + ")");
+                    xyz[3 * i] = x / length;
+                    xyz[3 * i + 1] = y / length;
+                    xyz[3 * i + 2] = z / length;
+                }
+                mesh.setNormals(xyz);
+            }
+        }
+
+        /**
+         * Makes the mesh smooth with the normals computed at the file's positions, so that the corners
+         * of a position (split by a seam of the texture) share one normal.
+         *
+         * @param mesh      the mesh of the corners
+         * @param positions the file's positions' coordinates
+         * @param triangles the mesh's triangles, by its vertices
+         */
+        void smoothAtPositions(TriangleMesh mesh, double[] positions, int[] triangles) {
+            if (!split()) {
+                mesh.smoothNormals();
+                return;
+            }
+            int[] byPosition = new int[triangles.length];
+            for (int i = 0; i < triangles.length; ++i)
+                byPosition[i] = corners.get(triangles[i]).position();
+            double[] atPositions = new TriangleMesh(positions, byPosition).smoothNormals().getNormals();
+            double[] xyz = new double[3 * corners.size()];
+            for (int i = 0; i < corners.size(); ++i)
+                System.arraycopy(atPositions, 3 * corners.get(i).position(), xyz, 3 * i, 3);
+            mesh.setNormals(xyz);
+        }
     }
 
     /**
@@ -227,19 +391,26 @@ public final class ObjMesh {
 
     /**
      * Checks the face indices of an OBJ file line by line, so that a bad one is reported with its line:
-     * an absolute index (from 1) must name one of the file's vertices, a relative one (negative) one
-     * of the vertices before its line. Indices that are not whole numbers are left to the library.
+     * an absolute index (from 1) must name one of the file's vertices (texture coordinates, normals),
+     * a relative one (negative) one of those before its line. Indices that are not whole numbers are
+     * left to the library.
      */
     private static final class FaceIndexChecker {
         private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
+        /** The statements that define what a face's indices name: positions, texture coordinates, normals. */
+        private static final String[] KEYWORDS = { "v", "vt", "vn" };
+        /** What each kind of index names, one and many. */
+        private static final String[] ONE = { "vertex", "texture coordinate (vt)", "normal (vn)" };
+        private static final String[] MANY = { "vertices", "texture coordinates", "normals" };
 
         private final Path file;
         /** The line being read, from 1. */
         private int lineNumber = 1;
-        private long vertexCount;
-        /** The largest index naming a vertex later in the file than its face, and the line of that face. */
-        private int forwardLine;
-        private long forwardIndex;
+        /** How many of each kind the file has defined so far. */
+        private final long[] counts = new long[KEYWORDS.length];
+        /** Of each kind, the largest index naming one later in the file than its face, and the line of that face. */
+        private final int[] forwardLines = new int[KEYWORDS.length];
+        private final long[] forwardIndices = new long[KEYWORDS.length];
 
         FaceIndexChecker(Path file) {
             this.file = file;
@@ -248,21 +419,25 @@ public final class ObjMesh {
         /** Checks the next line. */
         void accept(CharSequence line) {
             String text = line.toString().strip(); // a line may end with \r
-            if (starts(text, 'v'))
-                ++vertexCount;
-            else if (starts(text, 'f'))
-                for (String item : text.substring(1).strip().split("\\s+"))
-                    check(item.split("/", -1)[0]);
+            for (int kind = 0; kind < KEYWORDS.length; ++kind)
+                if (starts(text, KEYWORDS[kind]))
+                    ++counts[kind];
+            if (starts(text, "f"))
+                for (String item : text.substring(1).strip().split("\\s+")) {
+                    String[] parts = item.split("/", -1);
+                    for (int kind = 0; kind < Math.min(parts.length, KEYWORDS.length); ++kind)
+                        check(parts[kind], kind);
+                }
             ++lineNumber;
         }
 
-        /** Whether the line is a statement of this one-letter keyword (v, f). */
-        private static boolean starts(String text, char keyword) {
-            return !text.isEmpty() && text.charAt(0) == keyword
-                    && (text.length() == 1 || Character.isWhitespace(text.charAt(1)));
+        /** Whether the line is a statement of this keyword (v, vt, vn, f). */
+        private static boolean starts(String text, String keyword) {
+            return text.startsWith(keyword)
+                    && (text.length() == keyword.length() || Character.isWhitespace(text.charAt(keyword.length())));
         }
 
-        private void check(String item) {
+        private void check(String item, int kind) {
             if (!WHOLE.matcher(item).matches())
                 return;
             long index;
@@ -272,25 +447,26 @@ public final class ObjMesh {
                 index = item.startsWith("-") ? Long.MIN_VALUE : Long.MAX_VALUE;
             }
             if (index == 0)
-                throw error("a face refers to vertex 0; vertices count from 1 (or back from -1)");
+                throw error("a face refers to " + ONE[kind] + " 0; " + MANY[kind] + " count from 1 (or back from -1)");
             if (index > Integer.MAX_VALUE || index < -Integer.MAX_VALUE)
-                throw error("a face refers to vertex " + item + ", beyond any number of vertices");
-            if (index < 0 && -index > vertexCount)
-                throw error("a face refers to a vertex before the first one (relative index " + index
+                throw error("a face refers to " + ONE[kind] + " " + item + ", beyond any number of " + MANY[kind]);
+            if (index < 0 && -index > counts[kind])
+                throw error("a face refers to a " + ONE[kind] + " before the first one (relative index " + index
                         + " too far back)");
-            if (index > vertexCount && index > forwardIndex) {
-                forwardLine = lineNumber;
-                forwardIndex = index;
+            if (index > counts[kind] && index > forwardIndices[kind]) {
+                forwardLines[kind] = lineNumber;
+                forwardIndices[kind] = index;
             }
         }
 
-        /** Checks, at the end of the file, that indices naming later vertices name existing ones. */
+        /** Checks, at the end of the file, that indices naming later vertices (and so on) name existing ones. */
         void finish() {
-            if (forwardIndex > vertexCount) {
-                lineNumber = forwardLine;
-                throw error("a face refers to vertex " + forwardIndex + ", but the file has " + vertexCount
-                        + " vertices");
-            }
+            for (int kind = 0; kind < KEYWORDS.length; ++kind)
+                if (forwardIndices[kind] > counts[kind]) {
+                    lineNumber = forwardLines[kind];
+                    throw error("a face refers to " + ONE[kind] + " " + forwardIndices[kind] + ", but the file has "
+                            + counts[kind] + " " + MANY[kind]);
+                }
         }
 
         /** A problem at the line being read. */

@@ -18,6 +18,8 @@ import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
+import primitives.CheckerTexture;
+import primitives.ImageTexture;
 import primitives.Material;
 import primitives.Point3D;
 import primitives.Ray;
@@ -147,8 +149,9 @@ public final class SceneLoader {
     private static Intersectable body(SceneElement element, Path folder) {
         return switch (element.name()) {
             case "geometries" -> geometries(element, folder);
-            case "mesh" -> surface(mesh(element, folder), element);
-            default -> surface(shape(element), element);
+            case "mesh" -> texture(surface(mesh(element, folder), element), element, folder);
+            case "triangle-mesh" -> texture(surface(triangleMesh(element), element), element, folder);
+            default -> texture(surface(shape(element), element), element, folder);
         };
     }
 
@@ -179,8 +182,10 @@ public final class SceneLoader {
     }
 
     private static TriangleMesh mesh(SceneElement mesh, Path folder) {
+        ObjMesh.Normals normals = !mesh.has("smooth") ? ObjMesh.Normals.FILE
+                : mesh.flag("smooth") ? ObjMesh.Normals.SMOOTH : ObjMesh.Normals.FLAT;
         TriangleMesh triangles = ObjMesh.readMesh(folder.resolve(mesh.text("file")), mesh.number("scale"),
-                mesh.point("position"));
+                mesh.point("position"), normals);
         Point3D farthest = Point3D.ZERO;
         for (int v = 0; v < triangles.getVerticesCount(); ++v) {
             Point3D vertex = triangles.getVertex(v);
@@ -191,13 +196,47 @@ public final class SceneLoader {
         return triangles;
     }
 
+    /** A mesh given in the file: its vertices, triangles, and maybe normals and UVs. */
+    private static TriangleMesh triangleMesh(SceneElement element) {
+        double[] vertices = element.numbers("vertices");
+        double[] indices = element.numbers("triangles");
+        int[] triangles = new int[indices.length];
+        for (int i = 0; i < indices.length; ++i)
+            triangles[i] = (int) indices[i]; // whole numbers of the int range: the schema's type
+        TriangleMesh mesh = new TriangleMesh(vertices, triangles);
+        if (element.has("uvs"))
+            mesh.setUVs(element.numbers("uvs"));
+        if (element.has("normals"))
+            mesh.setNormals(element.numbers("normals"));
+        else if (element.flag("smooth"))
+            mesh.smoothNormals();
+        return mesh;
+    }
+
     /** Gives a body the emission and material of its element. */
     private static Geometry surface(Geometry body, SceneElement element) {
-        return body.setEmission(element.color("emission"))
-                .setMaterial(new Material().setKd(element.number("kD")).setKs(element.number("kS"))
-                        .setKt(element.number("kT")).setKr(element.number("kR"))
-                        .setKg(element.number("kG")).setKb(element.number("kB"))
-                        .setShininess(element.integer("nShininess")));
+        Material material = new Material().setKd(element.number("kD")).setKs(element.number("kS"))
+                .setKt(element.number("kT")).setKr(element.number("kR"))
+                .setKg(element.number("kG")).setKb(element.number("kB"))
+                .setShininess(element.integer("nShininess"));
+        if (element.has("ior"))
+            material.setIor(element.number("ior"));
+        if (element.flag("fresnel") && !material.hasIor())
+            throw element.error("fresnel=\"true\" needs an index of refraction: give the attribute 'ior'", null);
+        return body.setEmission(element.color("emission")).setMaterial(material.setFresnel(element.flag("fresnel")));
+    }
+
+    /** Gives a body the texture of its element's child, when it has one. */
+    private static Geometry texture(Geometry body, SceneElement element, Path folder) {
+        SceneElement image = element.child("image-texture");
+        SceneElement checker = element.child("checker-texture");
+        if (image != null)
+            body.setTexture(build(image, () -> new ImageTexture(folder.resolve(image.text("file")),
+                    image.number("size"))));
+        else if (checker != null)
+            body.setTexture(build(checker, () -> new CheckerTexture(checker.color("color1"), checker.color("color2"),
+                    checker.number("size"))));
+        return body;
     }
 
     /** Runs a step that reads an element; a problem it meets is reported at the element's place. */

@@ -57,12 +57,15 @@ final class SceneParser {
     private static final Pattern MISPLACED_ELEMENT = Pattern.compile(
             "Invalid content was found starting with element '(.*?)'\\. (?:One of '\\{(.*)\\}' is expected|No child element is expected at this point)\\.");
     private static final Pattern UNKNOWN_ROOT = Pattern.compile("Cannot find the declaration of element '(.*)'\\.");
-    private static final Pattern TEXT_CONTENT = Pattern.compile(
-            "Element '(.*)' (?:cannot have character|must have no character or element information item) .*");
+    private static final Pattern TEXT_CONTENT = Pattern.compile("Element '(.*)' cannot have character .*");
+    private static final Pattern ANY_CONTENT = Pattern.compile(
+            "Element '(.*)' must have no character or element information item .*");
     private static final Map<String, String> TYPES = Map.of(
             "number", "a number",
             "triple", "three numbers",
             "vertices", "a list of numbers, x y z for each of 3 or more vertices",
+            "numbers", "a list of numbers",
+            "indices", "a list of whole numbers, 0 or more",
             "count", "a whole number, 1 or more",
             "whole", "a whole number, 0 or more",
             "seed", "a whole number",
@@ -185,6 +188,8 @@ final class SceneParser {
                     : "the root element must be <scene>, not <" + m.group(1) + ">";
         if ((m = TEXT_CONTENT.matcher(text)).matches())
             return "<" + m.group(1) + "> must not contain text";
+        if ((m = ANY_CONTENT.matcher(text)).matches())
+            return "<" + m.group(1) + "> must not contain text or elements";
         if (text.startsWith("DOCTYPE is disallowed"))
             return "a scene file must not have a DOCTYPE";
         return text;

@@ -1,5 +1,6 @@
 package scenefile;
 
+import java.io.File;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.math.BigDecimal;
@@ -8,7 +9,9 @@ import java.math.RoundingMode;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
+import java.util.stream.Collectors;
 
 import geometries.Cylinder;
 import geometries.Geometries;
@@ -24,9 +27,12 @@ import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
+import primitives.CheckerTexture;
 import primitives.Color;
+import primitives.ImageTexture;
 import primitives.Material;
 import primitives.Point3D;
+import primitives.Texture;
 import primitives.Vector;
 import renderer.Camera;
 import scene.Scene;
@@ -49,7 +55,10 @@ import static primitives.Util.requireNonNull;
  * twice gives the same text.
  * <p>
  * The scene's own name is not written: the file has one name, the picture's, which the loader gives both
- * the picture and its scene.
+ * the picture and its scene. A flat untextured {@link TriangleMesh} is written as a group of its triangles,
+ * a smooth or textured one as a {@code <triangle-mesh>} of its vertices, triangles, normals and UVs; an
+ * image texture's file is named relative to the scene file's folder ({@link #write}) or by its absolute
+ * path ({@link #toXml}).
  */
 public final class SceneWriter {
     private static final String INDENT = "    ";
@@ -73,7 +82,7 @@ public final class SceneWriter {
      */
     public static void write(Picture picture, Path file) {
         requireNonNull(file, "scene file");
-        String xml = toXml(picture);
+        String xml = toXml(picture, file.toAbsolutePath().getParent());
         try {
             Path folder = file.toAbsolutePath().getParent();
             if (folder != null)
@@ -92,11 +101,21 @@ public final class SceneWriter {
      * @throws IllegalArgumentException when the picture has a body or light the format cannot express
      */
     public static String toXml(Picture picture) {
+        return toXml(picture, null);
+    }
+
+    /**
+     * The text of a picture's scene file, its image textures' files named relative to a folder.
+     *
+     * @param picture the picture
+     * @param folder  the scene file's folder, or null to name the files by their absolute paths
+     */
+    private static String toXml(Picture picture, Path folder) {
         requireNonNull(picture, "picture");
         Scene scene = picture.scene();
         if (picture.name().isEmpty())
             throw new IllegalArgumentException("a scene file cannot express an empty picture name");
-        Xml xml = new Xml();
+        Xml xml = new Xml(folder);
         xml.text.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
         xml.start("scene").attribute("name", escape(picture.name()))
                 .attribute("background-color", color(scene.background), "0 0 0").open();
@@ -196,12 +215,29 @@ public final class SceneWriter {
             geometries(xml, ((Geometries) body).getGeometries());
             return;
         }
-        // a mesh: a group of its triangles, each with the mesh's surface (a scene file names no OBJ file for it)
+        // a flat mesh: a group of its triangles, each with the mesh's surface (a scene file names no OBJ file
+        // for it); a smooth or textured one, its vertices and triangles with their normals and UVs
         if (type == TriangleMesh.class) {
-            geometries(xml, ((TriangleMesh) body).getTriangles());
-            return;
-        }
-        if (type == Sphere.class) {
+            TriangleMesh mesh = (TriangleMesh) body;
+            if (!mesh.isSmooth() && mesh.getUVs() == null && mesh.getTexture() == null) {
+                geometries(xml, mesh.getTriangles());
+                return;
+            }
+            double[] vertices = new double[3 * mesh.getVerticesCount()];
+            for (int v = 0; v < mesh.getVerticesCount(); ++v) {
+                Point3D vertex = mesh.getVertex(v);
+                vertices[3 * v] = vertex.getX();
+                vertices[3 * v + 1] = vertex.getY();
+                vertices[3 * v + 2] = vertex.getZ();
+            }
+            xml.start("triangle-mesh").attribute("vertices", numbers(vertices))
+                    .attribute("triangles", Arrays.stream(mesh.indices()).mapToObj(Integer::toString)
+                            .collect(Collectors.joining(" ")));
+            if (mesh.isSmooth())
+                xml.attribute("normals", numbers(mesh.getNormals()));
+            if (mesh.getUVs() != null)
+                xml.attribute("uvs", numbers(mesh.getUVs()));
+        } else if (type == Sphere.class) {
             Sphere sphere = (Sphere) body;
             xml.start("sphere").attribute("center", point(sphere.getCenter()))
                     .attribute("radius", number(sphere.getRadius()));
@@ -232,7 +268,30 @@ public final class SceneWriter {
         } else
             throw new IllegalArgumentException("a scene file cannot express the body type " + type.getName());
         surface(xml, (Geometry) body);
-        xml.empty();
+        texture(xml, ((Geometry) body).getTexture());
+    }
+
+    /** Ends a body's element: empty, or with its texture inside. */
+    private static void texture(Xml xml, Texture texture) {
+        if (texture == null) {
+            xml.empty();
+            return;
+        }
+        String body = xml.element;
+        xml.open();
+        if (texture.getClass() == ImageTexture.class) {
+            ImageTexture image = (ImageTexture) texture;
+            xml.start("image-texture").attribute("file", escape(xml.path(image.getFile())))
+                    .attribute("size", number(image.getSize()), "1").empty();
+        } else if (texture.getClass() == CheckerTexture.class) {
+            CheckerTexture checker = (CheckerTexture) texture;
+            xml.start("checker-texture").attribute("color1", color(checker.getColor1()))
+                    .attribute("color2", color(checker.getColor2()))
+                    .attribute("size", number(checker.getSize()), "1").empty();
+        } else
+            throw new IllegalArgumentException("a scene file cannot express the texture type "
+                    + texture.getClass().getName());
+        xml.close(body);
     }
 
     private static void surface(Xml xml, Geometry body) {
@@ -242,6 +301,9 @@ public final class SceneWriter {
                 .attribute("kT", number(material.getKt()), "0").attribute("kR", number(material.getKr()), "0")
                 .attribute("kG", number(material.getKg()), "0").attribute("kB", number(material.getKb()), "0")
                 .attribute("nShininess", Integer.toString(material.getShininess()), "0");
+        if (material.hasIor())
+            xml.attribute("ior", number(material.getIor()));
+        xml.attribute("fresnel", Boolean.toString(material.isFresnel()), "false");
     }
 
     // ===== values =====
@@ -270,6 +332,11 @@ public final class SceneWriter {
         String plain = decimal.toPlainString();
         String scientific = decimal.toString().replace("E+", "E");
         return plain.length() <= scientific.length() + 6 ? plain : scientific;
+    }
+
+    /** {@return numbers in their shortest texts, one space apart} */
+    private static String numbers(double[] values) {
+        return Arrays.stream(values).mapToObj(SceneWriter::number).collect(Collectors.joining(" "));
     }
 
     private static String triple(double x, double y, double z) {
@@ -408,13 +475,31 @@ public final class SceneWriter {
     /** The text being written: elements one per line, indented by their depth. */
     private static final class Xml {
         private final StringBuilder text = new StringBuilder();
+        /** The scene file's folder, which files are named relative to; null for absolute paths. */
+        private final Path folder;
+        /** The name of the element started last. */
+        private String element;
         private int depth;
         /** Where the element being started begins in the text. */
         private int elementStart;
         private boolean hasAttributes;
 
+        /** @param folder the scene file's folder, which files are named relative to; null for absolute paths */
+        Xml(Path folder) {
+            this.folder = folder;
+        }
+
+        /** {@return a file's name in the scene file: relative to its folder when it can be, else absolute} */
+        String path(Path file) {
+            Path absolute = file.toAbsolutePath().normalize();
+            if (folder != null && absolute.getRoot() != null && absolute.getRoot().equals(folder.getRoot()))
+                return folder.normalize().relativize(absolute).toString().replace(File.separatorChar, '/');
+            return absolute.toString();
+        }
+
         /** Begins an element's start tag on a new line. */
         Xml start(String name) {
+            element = name;
             elementStart = text.length();
             hasAttributes = false;
             text.append(INDENT.repeat(depth)).append('<').append(name);
@@ -458,5 +543,6 @@ public final class SceneWriter {
             --depth;
             text.append(INDENT.repeat(depth)).append("</").append(name).append(">\n");
         }
+
     }
 }

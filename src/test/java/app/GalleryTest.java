@@ -67,8 +67,8 @@ class GalleryTest {
     void testEveryPictureRenders() {
         List<Picture> pictures = Gallery.pictures();
         // ===== Equivalence Partitions Tests =====
-        // TC01: 20 pictures, each written as a PNG that shows more than one colour
-        assertEquals(20, pictures.size(), "TC01: wrong number of gallery pictures");
+        // TC01: 23 pictures, each written as a PNG that shows more than one colour
+        assertEquals(23, pictures.size(), "TC01: wrong number of gallery pictures");
         for (Picture picture : pictures) {
             ImageWriter image = Gallery.render(picture, FOLDER).getImageWriter();
             assertTrue(Files.exists(FOLDER.resolve(picture.name() + ".png")), "TC01: " + picture.name() + " not written");
@@ -155,7 +155,7 @@ class GalleryTest {
     void testSceneFilesMatchPictures() throws IOException {
         Path quarterFolder = Path.of("target", "test-images", "gallery-files");
         // ===== Equivalence Partitions Tests =====
-        // TC01: for each of the 20 pictures, the scene file exists and loads into the same picture
+        // TC01: for each of the 23 pictures, the scene file exists and loads into the same picture
         for (Picture picture : Gallery.pictures()) {
             Path file = Path.of("scenes", picture.name() + ".xml");
             assertTrue(Files.isRegularFile(file), "TC01: missing scene file " + file);

@@ -166,6 +166,31 @@ class RenderCommandTest {
         assertFalse(result.err().contains("Exception"), tc + ": exception class name printed: " + result.err());
     }
 
+    /**
+     * Test method for {@link RenderCommand#call()}: scene files of smooth textured meshes and of glass render
+     * from the command line, and a missing texture is one line naming it.
+     */
+    @Test
+    void testMeshesTexturesAndGlass() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the gallery's Spot (an OBJ file with vt, its texture) and glass sphere render, 60 pixels wide
+        for (String name : new String[] { "spotSmoothFlat", "glassSphereChecker" }) {
+            Result result = run(Path.of("scenes", name + ".xml").toString(), "-o", FOLDER.resolve(name + ".png").toString(),
+                    "--width", "60");
+            assertEquals(0, result.code(), "TC01: " + name + " failed: " + result.err());
+            assertEquals(40, image(name).getHeight(), "TC01: " + name + " keeps its proportions");
+        }
+        // ===== Boundary Values Tests =====
+        // TC11: a texture file that is missing: exit 2, one line naming the scene file's line and the image
+        Path missing = TestFiles.write(FOLDER, "missingTexture.xml", "<scene><geometries><sphere center=\"0 0 -100\""
+                + " radius=\"10\"><image-texture file=\"nowhere.png\"/></sphere></geometries></scene>\n");
+        Result result = run(missing.toString(), "-o", FOLDER.resolve("missingTexture.png").toString());
+        assertEquals(2, result.code(), "TC11: a missing texture must exit 2");
+        assertOneLine(result, "TC11");
+        assertTrue(result.err().contains(missing + ":1:") && result.err().contains("nowhere.png"),
+                "TC11: the line must name the scene file and the image: " + result.err());
+    }
+
     /** Test method for {@link RenderCommand#call()}: a render succeeds and reports what it did. */
     @Test
     void testRender() throws IOException {

@@ -2,6 +2,7 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static testutil.TestAssertions.assertMessage;
@@ -10,14 +11,16 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
+import primitives.CheckerTexture;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point3D;
 import primitives.Ray;
+import primitives.Texture;
 import primitives.Vector;
 
 /**
- * Unit tests for {@link geometries.Geometry}: emission and material defaults and setters.
+ * Unit tests for {@link geometries.Geometry}: emission, material and texture defaults and setters.
  */
 class GeometryTest {
 
@@ -117,5 +120,33 @@ class GeometryTest {
         assertSame(s, chained, "TC03: chained setters must return the same shape");
         assertEquals(new Color(1, 2, 3), s.getEmission(), "TC03: wrong emission after chaining");
         assertSame(m, s.getMaterial(), "TC03: wrong material after chaining");
+    }
+
+    /** Test method for {@link geometries.Geometry#setTexture(primitives.Texture)}. */
+    @Test
+    void testSetTexture() {
+        Texture checker = new CheckerTexture(Color.BLACK, new Color(255, 255, 255), 1);
+        Sphere sphere = new Sphere(Point3D.ZERO, 1);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: no texture by default; the setter returns the body, the getter gives the texture
+        assertNull(sphere.getTexture(), "TC01: no texture by default");
+        assertSame(sphere, sphere.setTexture(checker), "TC01: setTexture must return this");
+        assertSame(checker, sphere.getTexture(), "TC01: wrong texture after set");
+        // TC02: a body without surface coordinates (a tube, this dummy) refuses a texture
+        Tube tube = new Tube(new Ray(Point3D.ZERO, new Vector(0, 0, 1)), 1);
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> tube.setTexture(checker),
+                "TC02: a tube has no surface coordinates"), "surface coordinates", "TC02");
+        assertThrows(IllegalArgumentException.class, () -> new Dummy().setTexture(checker), "TC02: the dummy");
+        assertThrows(UnsupportedOperationException.class, () -> new Dummy().getUV(Point3D.ZERO), "TC02: no UV");
+        // TC03: a mesh refuses a texture until it has UVs
+        TriangleMesh mesh = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, new int[] { 0, 1, 2 });
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> mesh.setTexture(checker),
+                "TC03: a mesh without UVs"), "setUVs", "TC03");
+        assertSame(mesh, mesh.setUVs(new double[] { 0, 0, 1, 0, 0, 1 }).setTexture(checker), "TC03: with UVs");
+        // ===== Boundary Values Tests =====
+        // TC11: null is refused and the texture stays
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> sphere.setTexture(null),
+                "TC11: null texture"), "texture", "TC11");
+        assertSame(checker, sphere.getTexture(), "TC11: a refused texture must not change it");
     }
 }

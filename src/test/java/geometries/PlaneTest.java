@@ -1,6 +1,7 @@
 package geometries;
 
 import accel.ShadowFrustum;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -126,6 +127,28 @@ class PlaneTest {
         // TC02: a plane built from a point and a normal returns that normal, normalised
         Plane p = new Plane(new Point3D(0, 0, 1), new Vector(0, 3, 4));
         assertEquals(new Vector(0, 0.6, 0.8), p.getNormal(new Point3D(5, 0, 1)), "TC02: wrong normal");
+    }
+
+    /**
+     * Test method for {@link geometries.Plane#getUV(primitives.Point3D)}: the position in the plane from
+     * q0, u along the coordinate axis most across the normal, v along normal × u.
+     */
+    @Test
+    void testGetUV() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a floor facing +y through (1, 5, 2): u along +x, v along −z
+        Plane floor = new Plane(new Point3D(1, 5, 2), new Vector(0, 1, 0));
+        assertArrayEquals(new double[] { 3, -4 }, floor.getUV(new Point3D(4, 5, 6)), 1e-12, "TC01: a floor");
+        // TC02: a wall facing +z: u along +x (the first of x and y), v along z × x = +y
+        Plane wall = new Plane(Point3D.ZERO, new Vector(0, 0, 1));
+        assertArrayEquals(new double[] { 2, 7 }, wall.getUV(new Point3D(2, 7, 0)), 1e-12, "TC02: a wall");
+        // TC03: a tilted plane (x + y + z = 1): the coordinates are distances, |p − q0| = √(u² + v²)
+        Point3D p = new Point3D(2, 1, -2);
+        double[] uv = plane.getUV(p);
+        assertEquals(p.distance(plane.getQ0()), Math.sqrt(uv[0] * uv[0] + uv[1] * uv[1]), 1e-12, "TC03: tilted");
+        // ===== Boundary Values Tests =====
+        // TC11: q0 itself is (0, 0)
+        assertArrayEquals(new double[] { 0, 0 }, floor.getUV(new Point3D(1, 5, 2)), 0, "TC11: q0");
     }
 
     /**

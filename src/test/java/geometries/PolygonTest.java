@@ -3,6 +3,7 @@ package geometries;
 import accel.ShadowFrustum;
 import accel.BoundingVolumeHierarchy;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -160,6 +161,29 @@ class PolygonTest {
         // TC02: the normal is the same at every point and equals the plane's normal
         assertEquals(n, polygon.getNormal(new Point3D(0.25, 0.25, 0.5)), "TC02: normal differs across the polygon");
         assertEquals(n, polygon.getPlane().getNormal(), "TC02: normal differs from the plane's");
+    }
+
+    /**
+     * Test method for {@link geometries.Polygon#getUV(primitives.Point3D)}: the position in its plane from
+     * the first vertex, u along the first edge, v along normal × u.
+     */
+    @Test
+    void testGetUV() {
+        // a square of edge 100 in z = 0, counter-clockwise seen from +z: u along x, v along y
+        Polygon square = new Polygon(new Point3D(0, 0, 0), new Point3D(100, 0, 0), new Point3D(100, 100, 0),
+                new Point3D(0, 100, 0));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a point inside: its x and y
+        assertArrayEquals(new double[] { 25, 75 }, square.getUV(new Point3D(25, 75, 0)), 1e-12, "TC01: inside");
+        // TC02: the same square from its second vertex on: u along +y, v along −x, from (100, 0)
+        Polygon turned = new Polygon(new Point3D(100, 0, 0), new Point3D(100, 100, 0), new Point3D(0, 100, 0),
+                new Point3D(0, 0, 0));
+        assertArrayEquals(new double[] { 75, 75 }, turned.getUV(new Point3D(25, 75, 0)), 1e-12, "TC02: turned");
+        // ===== Boundary Values Tests =====
+        // TC11: the first vertex is (0, 0), the opposite corner (100, 100)
+        assertArrayEquals(new double[] { 0, 0 }, square.getUV(Point3D.ZERO), 0, "TC11: the first vertex");
+        assertArrayEquals(new double[] { 100, 100 }, square.getUV(new Point3D(100, 100, 0)), 1e-12,
+                "TC11: the opposite corner");
     }
 
     /**

@@ -1,5 +1,6 @@
 package geometries;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -127,6 +128,30 @@ class SphereTest {
         // TC03: the normal at the bottom of the sphere points down (outward)
         assertEquals(new Vector(0, -1, 0), sphere.getNormal(new Point3D(1, -1, 0)),
                 "TC03: normal at the bottom must point down");
+    }
+
+    /**
+     * Test method for {@link geometries.Sphere#getUV(primitives.Point3D)}: longitude and latitude as
+     * fractions, u = 0.5 + atan2(x, z)/2π and v = 0.5 + asin(y/r)/π, seen from the centre.
+     */
+    @Test
+    void testGetUV() {
+        Sphere s = new Sphere(new Point3D(1, 2, 3), 2);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: on the equator, facing +z: (0.5, 0.5); facing +x: (0.75, 0.5); facing −x: (0.25, 0.5)
+        assertArrayEquals(new double[] { 0.5, 0.5 }, s.getUV(new Point3D(1, 2, 5)), 1e-12, "TC01: facing +z");
+        assertArrayEquals(new double[] { 0.75, 0.5 }, s.getUV(new Point3D(3, 2, 3)), 1e-12, "TC01: facing +x");
+        assertArrayEquals(new double[] { 0.25, 0.5 }, s.getUV(new Point3D(-1, 2, 3)), 1e-12, "TC01: facing -x");
+        // TC02: 45° north, facing +z: latitude π/4, v = 0.75
+        double h = Math.sqrt(2);
+        assertArrayEquals(new double[] { 0.5, 0.75 }, s.getUV(new Point3D(1, 2 + h, 3 + h)), 1e-12, "TC02: 45° north");
+        // ===== Boundary Values Tests =====
+        // TC11: the poles: v = 1 at the top, 0 at the bottom
+        assertEquals(1, s.getUV(new Point3D(1, 4, 3))[1], 1e-12, "TC11: the top pole");
+        assertEquals(0, s.getUV(new Point3D(1, 0, 3))[1], 1e-12, "TC11: the bottom pole");
+        // TC12: facing −z, where u wraps around: 0 or 1
+        double u = s.getUV(new Point3D(1, 2, 1))[0];
+        assertTrue(u == 0 || u == 1, "TC12: facing -z, u must be 0 or 1, got " + u);
     }
 
     /**

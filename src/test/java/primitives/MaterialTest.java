@@ -284,6 +284,56 @@ class MaterialTest {
         assertSameRejection(() -> new Material().setShininess(-1), () -> new Material().setnShininess(-1), "TC13");
     }
 
+    /** Test method for {@link primitives.Material#setIor(double)}. */
+    @Test
+    void testSetIor() {
+        Material m = new Material();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: no ior by default (0): the course's straight-through refraction
+        assertFalse(m.hasIor(), "TC01: no ior by default");
+        assertEquals(0, m.getIor(), 0, "TC01: the default ior is 0, none");
+        // TC02: glass's 1.5 is kept, and the setter returns the material
+        assertSame(m, m.setIor(1.5), "TC02: setIor must return this");
+        assertEquals(1.5, m.getIor(), 0, "TC02: wrong ior");
+        assertTrue(m.hasIor(), "TC02: the material has an ior");
+        // TC03: below 1, NaN and infinite are refused, naming the ior; the ior stays 1.5
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> m.setIor(0.5),
+                "TC03: ior 0.5 must be refused");
+        assertMessage(e, "ior", "TC03");
+        assertMessage(e, "at least 1", "TC03");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> m.setIor(Double.NaN), "TC03: NaN"),
+                "finite", "TC03");
+        assertThrows(IllegalArgumentException.class, () -> m.setIor(Double.POSITIVE_INFINITY), "TC03: infinite");
+        assertEquals(1.5, m.getIor(), 0, "TC03: a refused ior must not change it");
+
+        // ===== Boundary Values Tests =====
+        // TC11: 1 is accepted (no bending); just below 1 and 0 are refused
+        assertEquals(1, new Material().setIor(1).getIor(), 0, "TC11: ior 1 must be accepted");
+        assertThrows(IllegalArgumentException.class, () -> m.setIor(Math.nextDown(1.0)), "TC11: just below 1");
+        assertThrows(IllegalArgumentException.class, () -> m.setIor(0), "TC11: ior 0");
+    }
+
+    /** Test method for {@link primitives.Material#setFresnel(boolean)}. */
+    @Test
+    void testSetFresnel() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: off by default; on, with an ior, it is kept and the setter returns the material
+        Material m = new Material().setIor(1.5);
+        assertFalse(m.isFresnel(), "TC01: Fresnel is off by default");
+        assertSame(m, m.setFresnel(true), "TC01: setFresnel must return this");
+        assertTrue(m.isFresnel(), "TC01: Fresnel must be on");
+        // TC02: Fresnel without an ior is refused, saying what to set first
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new Material().setFresnel(true), "TC02: Fresnel needs an ior");
+        assertMessage(e, "setIor", "TC02");
+
+        // ===== Boundary Values Tests =====
+        // TC11: turning it off needs no ior, and the material's text names the ior only when there is one
+        assertFalse(new Material().setFresnel(false).isFresnel(), "TC11: off without an ior");
+        assertFalse(new Material().toString().contains("ior"), "TC11: no ior in the text");
+        assertTrue(m.toString().contains("ior=1.5, fresnel=true"), "TC11: the ior in the text: " + m);
+    }
+
     /**
      * Checks a spread factor's setter (glossiness or blurriness): kept in [0, 1], rejected outside
      * with a message naming it, chained.

@@ -373,4 +373,73 @@ class ObjMeshTest {
         Path later = TestFiles.write(folder, "later.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n");
         assertEquals(1, ObjMesh.readMesh(later).getTrianglesCount(), "TC13: a forward reference must be read");
     }
+
+    /** A square of two triangles in z = 0 with texture coordinates and normals (not unit: the reader normalises them). */
+    private static final String SHADED_SQUARE = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+            + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\nvn 0 0 2\nvn 0 1 1\n";
+
+    /** Asserts three numbers of an array, from an offset, within 1e-12. */
+    private static void assertTriple(double x, double y, double z, double[] array, int offset, String message) {
+        assertEquals(x, array[offset], 1e-12, message + " (x)");
+        assertEquals(y, array[offset + 1], 1e-12, message + " (y)");
+        assertEquals(z, array[offset + 2], 1e-12, message + " (z)");
+    }
+
+    /**
+     * Test method for {@link ObjMesh#readMesh(Path, double, Point3D, ObjMesh.Normals)}: texture coordinates
+     * ({@code vt}) and normals ({@code vn}), each distinct corner of the file a vertex of the mesh.
+     */
+    @Test
+    void testNormalsAndUVs() {
+        Path square = TestFiles.write(folder, "shaded.obj", SHADED_SQUARE + "f 1/1/1 2/2/1 3/3/2\nf 1/1/1 3/3/2 4/4/2\n");
+        double s = 1 / Math.sqrt(2);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: four corners, each a position with its vt and vn: 4 vertices, smooth, UVs as in the file,
+        // normals normalised
+        TriangleMesh mesh = ObjMesh.readMesh(square);
+        assertEquals(4, mesh.getVerticesCount(), "TC01: one vertex per distinct corner");
+        assertTrue(mesh.isSmooth(), "TC01: a file with vn is smooth");
+        assertTriple(0, 0, 1, mesh.getNormals(), 3 * mesh.getVertexIndex(0, 1), "TC01: vn 1 normalised");
+        assertTriple(0, s, s, mesh.getNormals(), 3 * mesh.getVertexIndex(1, 2), "TC01: vn 2 normalised");
+        assertEquals(1, mesh.getUVs()[2 * mesh.getVertexIndex(0, 2)], 0, "TC01: vt 3's u");
+        assertEquals(1, mesh.getUVs()[2 * mesh.getVertexIndex(0, 2) + 1], 0, "TC01: vt 3's v");
+        // TC02: a texture seam: position 1 with vt 1 in one face and vt 5 in the other is two vertices
+        Path seam = TestFiles.write(folder, "seam.obj", SHADED_SQUARE + "f 1/1/1 2/2/1 3/3/2\nf 1/5/1 3/3/2 4/4/2\n");
+        TriangleMesh split = ObjMesh.readMesh(seam);
+        assertEquals(5, split.getVerticesCount(), "TC02: a seam splits its position");
+        assertEquals(split.getVertex(split.getVertexIndex(0, 0)), split.getVertex(split.getVertexIndex(1, 0)),
+                "TC02: the two vertices of a seam lie at one position");
+        // TC03: FLAT ignores the normals (the UVs stay); a file without vn is flat
+        TriangleMesh flat = ObjMesh.readMesh(square, 1, Point3D.ZERO, ObjMesh.Normals.FLAT);
+        assertFalse(flat.isSmooth(), "TC03: FLAT must read no normals");
+        assertEquals(8, flat.getUVs().length, "TC03: FLAT keeps the UVs");
+        Path textured = TestFiles.write(folder, "textured.obj", SHADED_SQUARE + "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+        assertFalse(ObjMesh.readMesh(textured).isSmooth(), "TC03: without vn the mesh is flat");
+        // TC04: SMOOTH computes normals at the file's positions: the two sides of a seam share theirs
+        Path tent = TestFiles.write(folder, "tent.obj", "v 0 0 0\nv 1 0 0\nv 1 1 1\nv 0 1 1\nv 0 2 0\nv 1 2 0\n"
+                + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\nf 4/1 3/2 6/3\nf 4/1 6/3 5/4\n");
+        TriangleMesh smooth = ObjMesh.readMesh(tent, 1, Point3D.ZERO, ObjMesh.Normals.SMOOTH);
+        assertEquals(8, smooth.getVerticesCount(), "TC04: the ridge's positions 3 and 4 are split by the seam");
+        double[] normals = smooth.getNormals();
+        int ridgeFront = smooth.getVertexIndex(1, 2); // position 4 with vt 4
+        int ridgeBack = smooth.getVertexIndex(2, 0); // position 4 with vt 1
+        assertTriple(0, 0, 1, normals, 3 * ridgeFront, "TC04: the ridge's normal points straight up");
+        assertTriple(0, 0, 1, normals, 3 * ridgeBack, "TC04: both sides of the seam share it");
+        // TC05: a bad vt or vn index, and a normal of length 0, name the file and the line
+        assertBadLine("bad-vt.obj", SHADED_SQUARE + "f 1/1 2/2 3/9\n", 12, "TC05",
+                "texture coordinate (vt) 9, but the file has 5 texture coordinates");
+        assertBadLine("bad-vn.obj", SHADED_SQUARE + "f 1//1 2//-3 3//1\n", 12, "TC05", "normal (vn) before the first");
+        Path zero = TestFiles.write(folder, "zero-vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
+        assertBadFile(zero, "TC05", "normal 1 (vn)", "no direction");
+
+        // ===== Boundary Values Tests =====
+        // TC11: when only some faces have vt (or vn), none count: the file's vertices, no UVs, flat
+        Path mixed = TestFiles.write(folder, "some.obj", SHADED_SQUARE + "f 1/1/1 2/2/1 3/3/2\nf 1 3 4\n");
+        TriangleMesh some = ObjMesh.readMesh(mixed);
+        assertEquals(4, some.getVerticesCount(), "TC11: the file's vertices");
+        assertFalse(some.isSmooth(), "TC11: not every face has normals");
+        assertEquals(null, some.getUVs(), "TC11: not every face has texture coordinates");
+        // TC12: vt 0 is an error at its line
+        assertBadLine("vt-zero.obj", SHADED_SQUARE + "f 1/0 2/1 3/1\n", 12, "TC12", "texture coordinate (vt) 0");
+    }
 }

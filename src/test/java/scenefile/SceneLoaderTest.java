@@ -30,7 +30,9 @@ import geometries.Tube;
 import lighting.DirectionalLight;
 import lighting.PointLight;
 import lighting.SpotLight;
+import primitives.CheckerTexture;
 import primitives.Color;
+import primitives.ImageTexture;
 import primitives.Point3D;
 import primitives.Vector;
 import renderer.Camera;
@@ -309,6 +311,105 @@ class SceneLoaderTest {
                 assertEquals(10, Math.abs(p.getZ()), 1e-12, "TC08: cube corner z must be ± 10");
             }
         }
+    }
+
+    /**
+     * Test method for {@link SceneLoader#load(Path)}: real glass (ior, fresnel), textures (an image, a
+     * checkerboard), an OBJ mesh with texture coordinates made smooth, and a mesh given in the file.
+     */
+    @Test
+    void testLoadGlassTexturesAndSmoothMeshes() {
+        TestFiles.writePng(FOLDER.resolve("textures"), "two.png", 2, 0xFF0000, 0x0000FF);
+        TestFiles.write(FOLDER.resolve("models"), "quad.obj", """
+                v 0 0 0
+                v 1 0 0
+                v 1 1 1
+                v 0 1 1
+                vt 0 0
+                vt 1 0
+                vt 1 1
+                vt 0 1
+                f 1/1 2/2 3/3 4/4
+                """);
+        Picture picture = SceneLoader.load(file("glass.xml", """
+                <scene>
+                  <geometries>
+                    <sphere center="0 0 0" radius="10" kT="0.9" ior="1.5" fresnel="true">
+                      <checker-texture color1="255 255 255" color2="0 0 0" size="0.125"/>
+                    </sphere>
+                    <plane q0="0 -10 0" normal="0 1 0" kD="0.5">
+                      <image-texture file="textures/two.png" size="20"/>
+                    </plane>
+                    <mesh file="models/quad.obj" smooth="true" kD="0.4">
+                      <image-texture file="textures/two.png"/>
+                    </mesh>
+                    <triangle-mesh vertices="0 0 0 1 0 0 0 1 0" triangles="0 1 2" normals="0 0 1 0 0 1 0 0 1"
+                                   uvs="0 0 1 0 0 1"/>
+                    <mesh file="models/quad.obj" smooth="false"/>
+                  </geometries>
+                </scene>
+                """));
+        List<Intersectable> bodies = bodies(picture);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the sphere's glass: ior 1.5, Fresnel, and its checkerboard of 1/8
+        Sphere sphere = (Sphere) bodies.get(0);
+        assertEquals(1.5, sphere.getMaterial().getIor(), 0, "TC01: wrong ior");
+        assertTrue(sphere.getMaterial().isFresnel(), "TC01: Fresnel must be on");
+        CheckerTexture checker = assertInstanceOf(CheckerTexture.class, sphere.getTexture(), "TC01: a checkerboard");
+        assertEquals(0.125, checker.getSize(), 0, "TC01: wrong checker size");
+        // TC02: the plane's image, found beside the scene file, size 20; no ior, no Fresnel by default
+        ImageTexture image = assertInstanceOf(ImageTexture.class, ((Plane) bodies.get(1)).getTexture(), "TC02: image");
+        assertEquals(FOLDER.toAbsolutePath().resolve("textures/two.png"), image.getFile(), "TC02: wrong file");
+        assertEquals(20, image.getSize(), 0, "TC02: wrong size");
+        assertFalse(((Plane) bodies.get(1)).getMaterial().hasIor(), "TC02: no ior by default");
+        // TC03: the OBJ quad with vt, smooth="true": UVs, and normals computed from its faces
+        TriangleMesh quad = (TriangleMesh) bodies.get(2);
+        assertTrue(quad.isSmooth(), "TC03: smooth=\"true\" must compute normals");
+        assertEquals(8, quad.getUVs().length, "TC03: the file's texture coordinates");
+        assertInstanceOf(ImageTexture.class, quad.getTexture(), "TC03: the mesh's texture");
+        // TC04: the mesh given in the file, with its normals and UVs
+        TriangleMesh given = (TriangleMesh) bodies.get(3);
+        assertEquals(3, given.getVerticesCount(), "TC04: three vertices");
+        assertTrue(given.isSmooth(), "TC04: the given normals");
+        assertEquals(1, given.getUVs()[2], 0, "TC04: the given UVs");
+        // ===== Boundary Values Tests =====
+        // TC11: smooth="false" reads the mesh flat
+        assertFalse(((TriangleMesh) bodies.get(4)).isSmooth(), "TC11: smooth=\"false\" is flat");
+    }
+
+    /** Writes a scene file of bodies, which start on its third line. */
+    private static Path bodiesFile(String name, String bodies) {
+        return file(name, "<scene>\n<geometries>\n" + bodies + "</geometries>\n</scene>\n");
+    }
+
+    /** Test method for {@link SceneLoader#load(Path)}: bad glass, textures and meshes, each at its line. */
+    @Test
+    void testBadGlassAndTextures() {
+        TestFiles.write(FOLDER.resolve("models"), "plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        String checker = "<checker-texture color1=\"1 1 1\" color2=\"0 0 0\"/>\n";
+        String triangle = "<triangle-mesh vertices=\"0 0 0 1 0 0 0 1 0\" ";
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an ior below 1; TC02: Fresnel without an ior
+        assertBadFile(bodiesFile("ior.xml", "<sphere center=\"0 0 0\" radius=\"1\" ior=\"0.5\"/>\n"), 3,
+                "at least 1", "TC01");
+        assertBadFile(bodiesFile("fresnel.xml", "<sphere center=\"0 0 0\" radius=\"1\" fresnel=\"true\"/>\n"), 3,
+                "needs an index of refraction", "TC02");
+        // TC03: a missing image, named with its path
+        assertBadFile(bodiesFile("missing.xml", "<sphere center=\"0 0 0\" radius=\"1\">\n"
+                + "<image-texture file=\"nowhere.png\"/>\n</sphere>\n"), 4, "nowhere.png", "TC03");
+        // TC04: a texture on a mesh without texture coordinates; TC05: on a tube, which the schema refuses
+        assertBadFile(bodiesFile("no-uv.xml", "<mesh file=\"models/plain.obj\">\n" + checker + "</mesh>\n"), 3,
+                "surface coordinates", "TC04");
+        assertBadFile(bodiesFile("tube.xml", "<tube p0=\"0 0 0\" dir=\"0 1 0\" radius=\"1\">\n" + checker
+                + "</tube>\n"), 5, "<tube> must not contain text or elements", "TC05");
+        // TC06: a given mesh's normals of the wrong number
+        assertBadFile(bodiesFile("normals.xml", triangle + "triangles=\"0 1 2\" normals=\"0 0 1\"/>\n"), 3,
+                "9 numbers", "TC06");
+        // ===== Boundary Values Tests =====
+        // TC11: a checkerboard of size 0, and a negative triangle index
+        assertBadFile(bodiesFile("size.xml", "<plane q0=\"0 0 0\" normal=\"0 1 0\">\n"
+                + checker.replace("/>", " size=\"0\"/>") + "</plane>\n"), 4, "size", "TC11");
+        assertBadFile(bodiesFile("index.xml", triangle + "triangles=\"0 1 -2\"/>\n"), 3, "triangles", "TC11");
     }
 
     /** Asserts that loading a bad file fails with one line naming the file, the line and the problem. */

@@ -144,9 +144,9 @@ class SceneParserTest {
         assertEquals("<geometries> must not contain text", SceneParser.plain(
                 "cvc-complex-type.2.3: Element 'geometries' cannot have character [children], because the type's "
                         + "content type is element-only."), "TC05: wrong element-only message");
-        // TC06: text or children in an empty element (2.1) → "<sphere> must not contain text"
-        assertEquals("<sphere> must not contain text", SceneParser.plain(
-                "cvc-complex-type.2.1: Element 'sphere' must have no character or element information item "
+        // TC06: text or children in an empty element (2.1) → "<tube> must not contain text or elements"
+        assertEquals("<tube> must not contain text or elements", SceneParser.plain(
+                "cvc-complex-type.2.1: Element 'tube' must have no character or element information item "
                         + "[children], because the type's content type is empty."), "TC06: wrong empty-type message");
         // TC07: a DOCTYPE → "a scene file must not have a DOCTYPE"
         assertEquals("a scene file must not have a DOCTYPE", SceneParser.plain(
@@ -263,7 +263,7 @@ class SceneParserTest {
         Path cube = file("cube.xml", "<scene><geometries><cube/></geometries></scene>");
         e = assertThrows(SceneFileException.class, () -> SceneParser.parse(cube), "TC02: <cube> must be reported");
         assertEquals("element <cube> is unknown or not allowed here; expected one of: sphere, triangle, polygon, "
-                + "plane, tube, cylinder, mesh, geometries", e.getProblem(), "TC02: wrong problem");
+                + "plane, tube, cylinder, mesh, triangle-mesh, geometries", e.getProblem(), "TC02: wrong problem");
         assertEquals(1, e.getLine(), "TC02: wrong line");
         assertEquals(27, e.getColumn(), "TC02: wrong column");
         // TC03: XML that is not well-formed: the parser's own message, with its place

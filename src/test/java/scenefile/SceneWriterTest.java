@@ -1,5 +1,7 @@
 package scenefile;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -31,7 +33,9 @@ import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
+import primitives.CheckerTexture;
 import primitives.Color;
+import primitives.ImageTexture;
 import primitives.Material;
 import primitives.Point3D;
 import primitives.Ray;
@@ -158,6 +162,8 @@ class SceneWriterTest {
         assertEquals(m.getShininess(), n.getShininess(), message + ": nShininess");
         assertEquals(m.getKg(), n.getKg(), message + ": kG");
         assertEquals(m.getKb(), n.getKb(), message + ": kB");
+        assertEquals(m.getIor(), n.getIor(), message + ": ior");
+        assertEquals(m.isFresnel(), n.isFresnel(), message + ": fresnel");
         if (body instanceof Sphere sphere) {
             assertSame(sphere.getCenter(), ((Sphere) other).getCenter(), message + ": centre");
             assertEquals(sphere.getRadius(), ((Sphere) other).getRadius(), message + ": radius");
@@ -456,6 +462,55 @@ class SceneWriterTest {
         // ===== Boundary Values Tests =====
         // TC11: the pixel in the middle shows the mesh: its emission and its diffuse light, red 40 + 0.5·200 + 25.5
         assertEquals(166, java.getPixel(10, 10).getRed(), 1, "TC11: the middle pixel must show the mesh");
+    }
+
+    /**
+     * Test method for {@link SceneWriter#write(Picture, Path)} and {@link SceneLoader#load(Path)}: real glass,
+     * textures and a smooth textured mesh, written and loaded, render the same pixels; the image's file is
+     * named relative to the scene file's folder.
+     */
+    @Test
+    void testRoundTripGlassTexturesAndSmoothMesh() {
+        Path png = TestFiles.writePng(FOLDER.resolve("textures"), "four.png", 2, 0xFF0000, 0x00FF00, 0x0000FF, 0xFFFFFF);
+        Scene scene = new Scene("glass").setAmbientLight(new AmbientLight(new Color(255, 255, 255), 0.1));
+        TriangleMesh tent = new TriangleMesh(new double[] { -40, -30, -60, 40, -30, -60, 40, 10, -90, -40, 10, -90 },
+                new int[] { 0, 1, 2, 0, 2, 3 }).smoothNormals().setUVs(new double[] { 0, 0, 1, 0, 1, 1, 0, 1 });
+        scene.geometries.add(
+                new Sphere(new Point3D(0, 0, -50), 20).setMaterial(new Material().setKt(0.9).setIor(1.5).setFresnel(true)),
+                new Plane(new Point3D(0, -30, 0), new Vector(0, 1, 0)).setMaterial(new Material().setKd(0.6))
+                        .setTexture(new CheckerTexture(new Color(255, 255, 255), new Color(30, 30, 30), 15)),
+                tent.setEmission(new Color(60, 60, 60)).setMaterial(new Material().setKd(0.5))
+                        .setTexture(new ImageTexture(png)));
+        scene.lights.add(new DirectionalLight(new Color(200, 200, 200), new Vector(-1, -2, -1)));
+        Picture picture = new Picture("glass", 40, 40, scene, new Camera(new Point3D(0, 20, 300),
+                new Vector(0, -0.1, -1), new Vector(0, 1, -0.1)).setVpSize(120, 120).setVpDistance(300));
+        Path file = FOLDER.resolve("glass.xml");
+        SceneWriter.write(picture, file);
+        Picture loaded = SceneLoader.load(file);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the same values: the glass, the textures, the mesh's normals and UVs
+        Material glass = ((Geometry) loaded.scene().geometries.getGeometries().get(0)).getMaterial();
+        assertEquals(1.5, glass.getIor(), "TC01: wrong ior");
+        assertTrue(glass.isFresnel(), "TC01: Fresnel must be on");
+        TriangleMesh mesh = (TriangleMesh) loaded.scene().geometries.getGeometries().get(2);
+        assertArrayEquals(tent.getNormals(), mesh.getNormals(), "TC01: wrong normals");
+        assertArrayEquals(tent.getUVs(), mesh.getUVs(), "TC01: wrong UVs");
+        assertSamePicture(picture, loaded, "TC01");
+        // TC02: the loaded picture renders exactly the Java one's pixels
+        assertEquals(0, differentPixels(render(picture, "glass-java"), render(loaded, "glass-file")),
+                "TC02: the loaded picture renders other pixels");
+        // ===== Boundary Values Tests =====
+        // TC11: the image is named relative to the scene file's folder by write, absolutely by toXml
+        String xml = SceneWriter.toXml(picture);
+        assertTrue(xml.contains("<image-texture file=\"" + png.toAbsolutePath().normalize() + "\"/>"),
+                "TC11: toXml names the absolute path:\n" + xml);
+        assertTrue(assertDoesNotThrow(() -> Files.readString(file)).contains("<image-texture file=\"textures/four.png\"/>"),
+                "TC11: write names the file relative to the scene's folder");
+        // TC12: a texture of the user's own class cannot be written
+        Scene own = new Scene("own");
+        own.geometries.add(new Sphere(Point3D.ZERO, 1).setTexture((u, v) -> Color.BLACK));
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> SceneWriter.toXml(new Picture("own", 10, 10,
+                own, picture.camera())), "TC12: an unknown texture"), "texture type", "TC12");
     }
 
     /**

@@ -3,7 +3,7 @@ package testutil;
 import geometries.TriangleMesh;
 import primitives.Point3D;
 
-/** Small triangle meshes shared by the tests and the benchmark: a cube, and one mesh of several. */
+/** Small triangle meshes shared by the tests and the benchmark: a cube, a box, and one mesh of several. */
 public final class TestMeshes {
     /** Not instantiable. */
     private TestMeshes() {
