@@ -36,6 +36,8 @@ import org.xml.sax.helpers.DefaultHandler;
  * ({@code scenefile/scene.xsd}, shipped in the jar). The first problem stops the reading with a
  * {@link SceneFileException} whose message is one plain line: the schema validator's wording is
  * turned into the scene file's terms ("attribute 'radius' of &lt;sphere&gt; must be a number").
+ * A file may name a schema for editors ({@code xsi:noNamespaceSchemaLocation}, as the example scenes
+ * do); the file it names is never read, and such attributes are not among an element's attributes.
  */
 final class SceneParser {
     /** The schema's resource, beside this class. */
@@ -247,7 +249,8 @@ final class SceneParser {
             throwPending();
             Map<String, String> values = new LinkedHashMap<>();
             for (int k = 0; k < attributes.getLength(); ++k)
-                values.put(attributes.getLocalName(k), attributes.getValue(k));
+                if (!XMLConstants.W3C_XML_SCHEMA_INSTANCE_NS_URI.equals(attributes.getURI(k))) // the editors' hints
+                    values.put(attributes.getLocalName(k), attributes.getValue(k));
             SceneElement element = new SceneElement(file, localName, values, locator.getLineNumber(),
                     locator.getColumnNumber());
             if (open.isEmpty())

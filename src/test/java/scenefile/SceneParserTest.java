@@ -246,6 +246,35 @@ class SceneParserTest {
         assertEquals(columnAfter("<scene/>", "/>"), column(empty), "TC12: <scene/> column must be 9");
     }
 
+    /**
+     * Test method for {@link SceneParser#parse(Path)}: a file that names a schema for editors
+     * ({@code xsi:noNamespaceSchemaLocation}) is checked against the shipped schema, whatever it names.
+     */
+    @Test
+    void testSchemaLocation() {
+        String xsi = "<scene xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" xsi:noNamespaceSchemaLocation=\"";
+        String body = "\" name=\"hinted\"><geometries><sphere center=\"0 0 0\" radius=\"5\"/></geometries></scene>";
+        Path schema = Path.of("src", "main", "resources", "scenefile", "scene.xsd").toAbsolutePath();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the project's own schema named: read, the hint not among the scene's attributes
+        SceneElement scene = SceneParser.parse(file("hinted.xml", xsi + schema.toUri() + body));
+        assertEquals("hinted", scene.text("name"), "TC01: wrong scene name");
+        assertFalse(scene.has("noNamespaceSchemaLocation"), "TC01: the hint must not be an attribute of <scene>");
+        assertEquals(5, scene.child("geometries").child("sphere").number("radius"), 0, "TC01: wrong radius");
+        // TC02: a schema named that allows <scene> no attribute and no child: the shipped one is checked
+        Path other = file("other.xsd", "<xs:schema xmlns:xs=\"http://www.w3.org/2001/XMLSchema\">"
+                + "<xs:element name=\"scene\"><xs:complexType/></xs:element></xs:schema>");
+        file("bad-by-other.xml", xsi + other.toAbsolutePath().toUri() + body);
+        assertEquals("hinted", SceneParser.parse(FOLDER.resolve("bad-by-other.xml")).text("name"),
+                "TC02: the named schema must not replace the shipped one");
+        // ===== Boundary Values Tests =====
+        // TC11: a schema that is not there, or on the web: never read, the file loads
+        assertEquals("hinted", SceneParser.parse(file("missing-xsd.xml", xsi + "no/such/scene.xsd" + body))
+                .text("name"), "TC11: a missing schema file must not matter");
+        assertEquals("hinted", SceneParser.parse(file("web-xsd.xml", xsi + "http://localhost:9/scene.xsd" + body))
+                .text("name"), "TC11: a schema on the web must not be fetched");
+    }
+
     /** Test method for {@link SceneParser#parse(Path)}: bad files give one plain line with the place. */
     @Test
     void testParseErrors() {
