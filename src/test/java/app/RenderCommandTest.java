@@ -458,6 +458,59 @@ class RenderCommandTest {
         }
     }
 
+    /**
+     * Test method for {@link RenderCommand#call()} with no scene file: no arguments print the usage, and
+     * {@code --gallery [FOLDER]} renders the gallery (its bad uses are one line each).
+     */
+    @Test
+    void testUsageAndGallery() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: no arguments: exit 2, the usage on err (the synopsis, SCENE.xml and --gallery), nothing on out
+        Result result = run();
+        assertEquals(2, result.code(), "TC01: no arguments should exit with 2");
+        assertTrue(result.err().startsWith("Usage: java -jar target/raytracer.jar"), "TC01: no usage: " + result.err());
+        String usage = result.err().replaceAll("\\s+", " ");
+        for (String part : List.of("[SCENE.xml]", "--gallery[=FOLDER]", "Exit codes:"))
+            assertTrue(usage.contains(part), "TC01: the usage does not show " + part + ": " + result.err());
+        assertEquals("", result.out(), "TC01: the usage must go to the error stream");
+        // TC02: options but no scene file: one line naming what is missing
+        result = run("--width", "30");
+        assertEquals(2, result.code(), "TC02: no scene file should exit with 2");
+        assertOneLine(result, "TC02");
+        assertTrue(result.err().startsWith("Missing required parameter: 'SCENE.xml' (or --gallery)"),
+                "TC02: wrong message: " + result.err());
+        // TC03: --gallery into a folder that cannot be made: one line naming the first picture, nothing written
+        Path notAFolder = Files.writeString(freshFolder("gallery").resolve("file.txt"), "not a folder");
+        result = run("--gallery", notAFolder.toString(), "--threads", "1");
+        assertEquals(2, result.code(), "TC03: an unwritable gallery folder should exit with 2");
+        assertOneLine(result, "TC03");
+        assertTrue(result.err().startsWith(notAFolder.resolve("baseRenderTwoColors.png") + ": cannot write image"),
+                "TC03: the line must name the first picture: " + result.err());
+        // TC04: --gallery with a scene file, or with an option of a scene's: one line each
+        result = run("--gallery", FOLDER.resolve("gallery").toString(), sceneFile.toString());
+        assertEquals(2, result.code(), "TC04: --gallery with a scene file should exit with 2");
+        assertOneLine(result, "TC04");
+        assertTrue(result.err().startsWith("give a scene file or --gallery, not both"), "TC04: " + result.err());
+        result = run("--gallery", FOLDER.resolve("gallery").toString(), "--width", "30");
+        assertEquals(2, result.code(), "TC04: --gallery with --width should exit with 2");
+        assertOneLine(result, "TC04");
+        assertTrue(result.err().startsWith("--width does not go with --gallery"), "TC04: " + result.err());
+        try (var files = Files.list(FOLDER.resolve("gallery"))) {
+            assertEquals(List.of(notAFolder), files.toList(), "TC04: a picture was written");
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: --gallery without a folder: images/, the folder the gallery is kept in (parsed, not rendered)
+        CommandLine commandLine = new CommandLine(new RenderCommand());
+        assertEquals(Path.of("images"), commandLine.parseArgs("--gallery").matchedOptionValue("--gallery", null),
+                "TC11: --gallery alone must render into images/");
+        // TC12: --gallery with --threads out of bounds: one line naming --threads
+        result = run("--gallery", FOLDER.resolve("gallery").toString(), "--threads", "-1");
+        assertEquals(2, result.code(), "TC12: --threads -1 should exit with 2");
+        assertOneLine(result, "TC12");
+        assertTrue(result.err().startsWith("--threads must be 0 (one per core) to"), "TC12: " + result.err());
+    }
+
     /** Test method for the image formats: the output file's extension chooses PNG, JPEG or BMP. */
     @Test
     void testFormats() throws IOException {
