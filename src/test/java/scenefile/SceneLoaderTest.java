@@ -420,10 +420,14 @@ class SceneLoaderTest {
         assertBadFile(file("doctype.xml", "<!DOCTYPE scene [<!ENTITY x SYSTEM \"file:///etc/passwd\">]>\n<scene name=\"&x;\"/>"),
                 1, "a scene file must not have a DOCTYPE", "TC15");
         // TC16: a second <camera>
-        assertBadFile(file("two-cameras.xml", "<scene>\n<camera/>\n<camera/>\n</scene>"), 3, "element <camera> is unknown or not allowed here", "TC16");
+        assertBadFile(file("two-cameras.xml", "<scene>\n<camera/>\n<camera/>\n</scene>"), 3,
+                "<scene> may have only one <camera>", "TC16");
         // TC17: a boolean that is not true or false
         assertBadFile(file("flag.xml", "<scene><render soft-shadows=\"yes\"/></scene>"),
                 1, "attribute 'soft-shadows' of <render> must be true or false, got 'yes'", "TC17");
+        // TC18: a misspelt attribute names the nearest valid one
+        assertBadFile(file("kd.xml", "<scene>\n<geometries>\n<plane q0=\"0 0 0\" normal=\"0 1 0\" kd=\"0.5\"/>\n"
+                + "</geometries>\n</scene>\n"), 3, "unknown attribute 'kd' on <plane>; did you mean 'kD'?", "TC18");
         // ===== Boundary Values Tests =====
         // TC21: an empty file
         assertBadFile(file("empty.xml", ""), 1, "Premature end of file", "TC21");

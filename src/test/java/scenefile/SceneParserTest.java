@@ -179,6 +179,68 @@ class SceneParserTest {
         assertEquals("", SceneParser.plain(""), "TC14: the empty message must stay empty");
     }
 
+    /**
+     * Test method for {@link SceneParser#plain(String, String)}: an unknown attribute or element names the
+     * nearest valid one and, when there are few, all of them.
+     */
+    @Test
+    void testPlainSuggestions() {
+        String camra = "cvc-complex-type.2.4.a: Invalid content was found starting with element 'camra'. "
+                + "One of '{camera, image}' is expected.";
+        String secondCamera = "cvc-complex-type.2.4.a: Invalid content was found starting with element 'camera'. "
+                + "One of '{image, render, ambient-light, lights, geometries}' is expected.";
+        String noneExpected = "cvc-complex-type.2.4.d: Invalid content was found starting with element 'foo'. "
+                + "No child element is expected at this point.";
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an attribute that differs in case: "did you mean 'kD'?" (<plane> has 10 attributes: no list)
+        assertEquals("unknown attribute 'kd' on <plane>; did you mean 'kD'?",
+                SceneParser.plain(unknownAttribute("kd", "plane"), "geometries"), "TC01: wrong message");
+        // TC02: two letters swapped on an element of 3 attributes: the nearest and the list
+        assertEquals("unknown attribute 'widht' on <image>; did you mean 'width'? <image> has: width, height, grid",
+                SceneParser.plain(unknownAttribute("widht", "image"), "scene"), "TC02: wrong message");
+        // TC03: nothing near, few attributes: the list alone
+        assertEquals("unknown attribute 'size' on <image>; <image> has: width, height, grid",
+                SceneParser.plain(unknownAttribute("size", "image"), "scene"), "TC03: wrong message");
+        // TC04: a misspelt element: the nearest of the expected ones, then the list
+        assertEquals("element <camra> is unknown or not allowed here; did you mean <camera>? Expected one of: camera,"
+                + " image", SceneParser.plain(camra, "scene"), "TC04: wrong message");
+        // TC05: a second element where one is allowed: said so
+        assertEquals("<scene> may have only one <camera>", SceneParser.plain(secondCamera, "scene"),
+                "TC05: wrong message");
+
+        // ===== Boundary Values Tests =====
+        // TC11: nothing near on <sphere> (10 attributes): the message alone
+        assertEquals("unknown attribute 'foo' on <sphere>", SceneParser.plain(unknownAttribute("foo", "sphere"),
+                "geometries"), "TC11: wrong message");
+        // TC12: no element expected, in <scene>: its children listed; with no parent known, nothing added
+        assertEquals("element <foo> is unknown or not allowed here; <scene> has: camera, image, render, ambient-light,"
+                + " lights, geometries", SceneParser.plain(noneExpected, "scene"), "TC12: wrong message");
+        assertEquals("element <foo> is unknown or not allowed here", SceneParser.plain(noneExpected, null),
+                "TC12: wrong message without a parent");
+        // TC13: the second-element message needs the parent: without it, the expected list as before
+        assertEquals("element <camera> is unknown or not allowed here; expected one of: image, render,"
+                + " ambient-light, lights, geometries", SceneParser.plain(secondCamera), "TC13: wrong message");
+        // TC14: an unknown element that is no slip of the keyboard (<cube>, <tube> one letter away): no guess
+        assertEquals("element <cube> is unknown or not allowed here; expected one of: sphere, tube",
+                SceneParser.plain("cvc-complex-type.2.4.a: Invalid content was found starting with element 'cube'. "
+                        + "One of '{sphere, tube}' is expected.", "geometries"), "TC14: wrong message");
+        // TC15: a file with a misspelt attribute: the message with its place
+        String plane = "<geometries><plane q0=\"0 0 0\" normal=\"0 1 0\" kd=\"1\"/></geometries>";
+        Path kd = file("kd.xml", "<scene>\n" + plane + "\n</scene>\n");
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(kd), "TC15: kd");
+        assertEquals(kd + ":2:" + columnAfter(plane, "/>") + ": unknown attribute 'kd' on <plane>; did you mean 'kD'?",
+                e.getMessage(), "TC15: wrong message");
+        Path twice = file("twice.xml", "<scene>\n<image/>\n<image/>\n</scene>\n");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(twice), "TC15: two images");
+        assertEquals(twice + ":3:9: <scene> may have only one <image>", e.getMessage(), "TC15: wrong message");
+    }
+
+    /** The validator's message for an attribute an element does not have. */
+    private static String unknownAttribute(String attribute, String element) {
+        return "cvc-complex-type.3.2.2: Attribute '" + attribute + "' is not allowed to appear in element '" + element
+                + "'.";
+    }
+
     /** Test method for {@link SceneParser#parse(Path)}: the tree of a small valid file. */
     @Test
     void testParseTree() {
