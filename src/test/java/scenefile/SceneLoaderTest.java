@@ -462,6 +462,40 @@ class SceneLoaderTest {
                 "<image>: image size 2147483647x2 is too large", "TC28");
     }
 
+    /**
+     * Test method for {@link SceneLoader#load(Path)}: a camera whose vUp is not orthogonal to vTo is
+     * told the vUp it would take, which then loads.
+     */
+    @Test
+    void testCameraUp() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: vUp "0 1 1" looking down -z: its part orthogonal to vTo is "0 1 0"
+        assertBadFile(file("up-slanted.xml", "<scene>\n<camera vTo=\"0 0 -1\" vUp=\"0 1 1\"/>\n</scene>"), 2,
+                "<camera>: vUp=\"0 1 1\" is not orthogonal to vTo=\"0 0 -1\"; use vUp=\"0 1 0\", its part orthogonal"
+                        + " to vTo", "TC01");
+        // TC02: a camera looking slightly down with vUp "0 1 0": "0 0.995 -0.0995", which loads
+        assertBadFile(file("up-down.xml", "<scene>\n<camera vTo=\"0 -0.1 -1\" vUp=\"0 1 0\"/>\n</scene>"), 2,
+                "use vUp=\"0 0.995 -0.0995\"", "TC02");
+        Camera camera = SceneLoader.load(file("up-down-fixed.xml", "<scene><camera vTo=\"0 -0.1 -1\""
+                + " vUp=\"0 0.995 -0.0995\"/></scene>")).camera();
+        assertEquals(0, camera.getVTo().dotProduct(camera.getVUp()), 1e-10, "TC02: the vUp given must be orthogonal");
+        // TC03: an oblique vTo "1 2 3": the vUp given has a few decimals, and loads
+        SceneFileException e = assertBadFile(file("up-oblique.xml", "<scene>\n<camera vTo=\"1 2 3\" vUp=\"0 1 0\"/>"
+                + "\n</scene>"), 2, "use vUp=\"-0.16903 0.84515 -0.50709\"", "TC03");
+        assertInstanceOf(IllegalArgumentException.class, e.getCause(), "TC03: the camera's exception is the cause");
+        assertEquals("camera", SceneLoader.load(file("up-oblique-fixed.xml", "<scene name=\"camera\"><camera"
+                + " vTo=\"1 2 3\" vUp=\"-0.16903 0.84515 -0.50709\"/></scene>")).name(), "TC03: the vUp given must load");
+
+        // ===== Boundary Values Tests =====
+        // TC11: vUp parallel to vTo: no part of it is orthogonal; a vUp that is is named
+        assertBadFile(file("up-parallel.xml", "<scene>\n<camera vTo=\"0 1 0\" vUp=\"0 2 0\"/>\n</scene>"), 2,
+                "<camera>: vUp=\"0 2 0\" is not orthogonal to vTo=\"0 1 0\": it is parallel to vTo; use a vUp"
+                        + " orthogonal to vTo, such as vUp=\"0 0 -1\"", "TC11");
+        // TC12: a vUp off by 1e-5: the rounded vUp "0 1 0"
+        assertBadFile(file("up-almost.xml", "<scene>\n<camera vTo=\"0 0 -1\" vUp=\"0 1 0.00001\"/>\n</scene>"), 2,
+                "is not orthogonal to vTo=\"0 0 -1\"; use vUp=\"0 1 0\"", "TC12");
+    }
+
     /** Test method for {@link SceneLoader#load(Path)}: extreme numbers that are meaningful are read. */
     @Test
     void testExtremeNumbers() {
