@@ -15,6 +15,9 @@ import java.util.Properties;
 import java.util.concurrent.Callable;
 import java.util.function.LongConsumer;
 
+import lighting.AreaLightSource;
+import lighting.LightSource;
+import lighting.SpotLight;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
 import me.tongfei.progressbar.ProgressBarConsumer;
@@ -236,6 +239,7 @@ public class RenderCommand implements Callable<Integer> {
         Render render = newRender(picture, file).setMultithreading(threads);
         Preview model = preview ? new Preview(render.getImageWriter(), file.getFileName().toString()) : null;
         PreviewWindow window = model == null ? null : openWindow(model, file);
+        noteIgnoredEdges(picture); // once the picture is sure to start: a failure before stays one line alone
         long start = System.nanoTime();
         if (quiet)
             render(picture, render.setProgressListener(model), () -> { });
@@ -310,6 +314,32 @@ public class RenderCommand implements Callable<Integer> {
         } finally {
             consumer.closeTerminal();
         }
+    }
+
+    /**
+     * Notes, in one line on the error stream (none with {@code --quiet}), that the first light with an
+     * edge casts hard shadows all the same because soft shadows are off: its square is ignored.
+     *
+     * @param picture the picture, with the command line's options applied
+     */
+    private void noteIgnoredEdges(Picture picture) {
+        if (quiet || picture.settings().softShadows())
+            return;
+        for (LightSource light : picture.scene().lights)
+            if (light instanceof AreaLightSource area && area.getEdges() > 0) {
+                PrintWriter err = spec.commandLine().getErr();
+                err.println(oneLine(sceneFile + ": <" + (light instanceof SpotLight ? "spot-light" : "point-light")
+                        + "> has edge " + number(area.getEdges()) + " but soft shadows are off: add"
+                        + " soft-shadows=\"true\" to <render> or --soft-shadows"));
+                err.flush();
+                return;
+            }
+    }
+
+    /** {@return a number as a person writes it: 40, not 40.0} */
+    private static String number(double value) {
+        return value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value)
+                : Double.toString(value);
     }
 
     /**
