@@ -82,7 +82,21 @@ public final class Gallery {
      * @return the render, its image still in memory for a look at the pixels
      */
     public static Render render(Picture picture, Path folder) {
-        return picture.render(picture.newRender(folder.resolve(picture.name() + ImageWriter.EXTENSION)));
+        return render(picture, folder, 0);
+    }
+
+    /**
+     * Renders a picture into a folder on some threads.
+     *
+     * @param picture the picture
+     * @param folder  the folder its PNG file goes to
+     * @param threads the number of rendering threads, 0 for one per core
+     * @return the render, its image still in memory for a look at the pixels
+     * @throws IllegalArgumentException when the number of threads is negative
+     */
+    public static Render render(Picture picture, Path folder, int threads) {
+        return picture.render(picture.newRender(folder.resolve(picture.name() + ImageWriter.EXTENSION))
+                .setMultithreading(threads));
     }
 
     private static Camera frontCamera(double z, double vpSize) {

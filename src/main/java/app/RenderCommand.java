@@ -9,11 +9,15 @@ import java.io.UncheckedIOException;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.Callable;
 import java.util.function.LongConsumer;
 
+import lighting.AreaLightSource;
+import lighting.LightSource;
+import lighting.SpotLight;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
 import me.tongfei.progressbar.ProgressBarConsumer;
@@ -42,17 +46,21 @@ import scenefile.SceneLoader;
  * The command line, {@value #NAME}: renders a scene file to an image (PNG, JPEG or BMP, by the output
  * file's extension), with a progress bar on the error stream as wide as the terminal, and prints the
  * elapsed time and the ray counts; {@code --quiet} keeps it silent but for a failure, {@code --preview}
- * shows the picture forming in a window. Options that are not given keep the scene file's settings. Exit
- * codes: 0 on success, 2 for anything that stops the picture (a bad argument, a bad scene file, an image
- * that cannot be written, not enough memory), with one line on the error stream and never a stack trace.
- * The output path is checked first, before the scene file is read.
+ * shows the picture forming in a window. Options that are not given keep the scene file's settings.
+ * {@code --gallery [FOLDER]} renders the example {@link Gallery} instead (into {@code images/} by default);
+ * with no arguments at all the command prints its usage and exits with 2. Exit codes: 0 on success, 2 for
+ * anything that stops the picture (a bad argument, a bad scene file, an image that cannot be written, not
+ * enough memory), with one line on the error stream and never a stack trace. The output path is checked
+ * first, before the scene file is read.
  */
 @Command(name = RenderCommand.NAME, mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
-        description = "Renders a scene file (XML, see the README) to an image.",
+        description = {"Renders a scene file (XML, see docs/scene-format.md) to an image, or with --gallery the"
+                + " example gallery."},
         footerHeading = "%nExit codes:%n",
-        footer = {"  0  the image is written",
-                "  2  bad arguments, a bad scene file, or the image cannot be written (one line says why)"})
+        footer = {"  0  the image (with --gallery, every picture of the gallery) is written",
+                "  2  no arguments (this usage), bad arguments, a bad scene file, or the image cannot be written"
+                        + " (one line says why)"})
 public class RenderCommand implements Callable<Integer> {
     /** Exit code: the image is written. */
     public static final int OK = 0;
@@ -73,8 +81,18 @@ public class RenderCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "SCENE.xml", description = "the scene file")
+    /** The folder {@code --gallery} renders into when it names none. */
+    public static final String GALLERY_FOLDER = "images";
+    /** The options that go with {@code --gallery}: the gallery's pictures keep their own settings. */
+    private static final List<String> GALLERY_OPTIONS = List.of("--gallery", "--threads", "--quiet");
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE.xml", description = "the scene file")
     private Path sceneFile;
+
+    @Option(names = "--gallery", arity = "0..1", paramLabel = "FOLDER", fallbackValue = GALLERY_FOLDER,
+            description = "render the example gallery into FOLDER (default: " + GALLERY_FOLDER + ") instead of a"
+                    + " scene file; only --threads and --quiet go with it")
+    private Path gallery;
 
     @Option(names = {"-o", "--output"}, paramLabel = "FILE",
             description = "the image file, whose extension gives its format: png, jpg, jpeg or bmp (default: the"
@@ -210,6 +228,10 @@ public class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        if (sceneFile == null && gallery == null)
+            return usage();
+        if (gallery != null)
+            return renderGallery();
         checkArguments();
         Path file = outputFile();
         ImageWriter.checkOutput(file);
@@ -217,6 +239,7 @@ public class RenderCommand implements Callable<Integer> {
         Render render = newRender(picture, file).setMultithreading(threads);
         Preview model = preview ? new Preview(render.getImageWriter(), file.getFileName().toString()) : null;
         PreviewWindow window = model == null ? null : openWindow(model, file);
+        noteIgnoredEdges(picture); // once the picture is sure to start: a failure before stays one line alone
         long start = System.nanoTime();
         if (quiet)
             render(picture, render.setProgressListener(model), () -> { });
@@ -227,6 +250,51 @@ public class RenderCommand implements Callable<Integer> {
             report(file, picture, seconds, render.getRayTracer());
         if (window != null)
             awaitClosed(window);
+        return OK;
+    }
+
+    /**
+     * With neither a scene file nor {@code --gallery}: the usage on the error stream when nothing at all
+     * was given, otherwise a bad argument (one line).
+     *
+     * @return the exit code for bad input
+     */
+    private int usage() {
+        CommandLine commandLine = spec.commandLine();
+        if (!commandLine.getParseResult().originalArgs().isEmpty())
+            throw new CommandLine.ParameterException(commandLine,
+                    "Missing required parameter: 'SCENE.xml' (or --gallery)");
+        commandLine.usage(commandLine.getErr());
+        commandLine.getErr().flush();
+        return BAD_INPUT;
+    }
+
+    /**
+     * Renders every picture of the gallery into the {@code --gallery} folder, a line for each on the
+     * output stream (none with {@code --quiet}).
+     *
+     * @return the exit code: 0 once every picture is written
+     */
+    private int renderGallery() {
+        CommandLine commandLine = spec.commandLine();
+        if (sceneFile != null)
+            throw new CommandLine.ParameterException(commandLine, "give a scene file or --gallery, not both");
+        for (CommandLine.Model.OptionSpec option : commandLine.getParseResult().matchedOptions())
+            if (!GALLERY_OPTIONS.contains(option.longestName()))
+                throw new CommandLine.ParameterException(commandLine, option.longestName()
+                        + " does not go with --gallery: the gallery's pictures keep their own settings"
+                        + " (only --threads and --quiet go with it)");
+        requireThreads();
+        PrintWriter out = commandLine.getOut();
+        for (Picture picture : Gallery.pictures()) {
+            long start = System.nanoTime();
+            Gallery.render(picture, gallery, threads);
+            if (!quiet) {
+                out.printf(Locale.ROOT, "%-40s %4dx%-4d %6.2f s%n", gallery.resolve(picture.name()
+                        + ImageWriter.EXTENSION), picture.nX(), picture.nY(), (System.nanoTime() - start) / 1e9);
+                out.flush();
+            }
+        }
         return OK;
     }
 
@@ -246,6 +314,32 @@ public class RenderCommand implements Callable<Integer> {
         } finally {
             consumer.closeTerminal();
         }
+    }
+
+    /**
+     * Notes, in one line on the error stream (none with {@code --quiet}), that the first light with an
+     * edge casts hard shadows all the same because soft shadows are off: its square is ignored.
+     *
+     * @param picture the picture, with the command line's options applied
+     */
+    private void noteIgnoredEdges(Picture picture) {
+        if (quiet || picture.settings().softShadows())
+            return;
+        for (LightSource light : picture.scene().lights)
+            if (light instanceof AreaLightSource area && area.getEdges() > 0) {
+                PrintWriter err = spec.commandLine().getErr();
+                err.println(oneLine(sceneFile + ": <" + (light instanceof SpotLight ? "spot-light" : "point-light")
+                        + "> has edge " + number(area.getEdges()) + " but soft shadows are off: add"
+                        + " soft-shadows=\"true\" to <render> or --soft-shadows"));
+                err.flush();
+                return;
+            }
+    }
+
+    /** {@return a number as a person writes it: 40, not 40.0} */
+    private static String number(double value) {
+        return value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value)
+                : Double.toString(value);
     }
 
     /**
@@ -344,15 +438,19 @@ public class RenderCommand implements Callable<Integer> {
             requireValid(() -> Camera.requireApertureSize(aperture, "--aperture"));
         if (focus != null)
             requireValid(() -> Camera.requireFocalDistance(focus, "--focus"));
-        if (threads < 0 || threads > MAX_THREADS)
-            throw new CommandLine.ParameterException(spec.commandLine(),
-                    "--threads must be 0 (one per core) to " + MAX_THREADS + ", got " + threads);
+        requireThreads();
         if (output != null)
             try {
                 ImageWriter.formatOf(output);
             } catch (IllegalArgumentException e) {
                 throw new CommandLine.ParameterException(spec.commandLine(), "-o: " + e.getMessage());
             }
+    }
+
+    private void requireThreads() {
+        if (threads < 0 || threads > MAX_THREADS)
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                    "--threads must be 0 (one per core) to " + MAX_THREADS + ", got " + threads);
     }
 
     private void requireGrid(String option, int value) {

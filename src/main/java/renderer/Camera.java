@@ -31,6 +31,11 @@ public class Camera {
      * starting points and directions then stay far from overflowing.
      */
     public static final double MAX_LENS_SIZE = 1e100;
+    /** The sine of the angle between vTo and vUp below which {@link #orthogonalUp} takes them for parallel. */
+    private static final double PARALLEL_SINE = 1e-6;
+    /** The fewest and (one past) the most decimals {@link #orthogonalUp} rounds to. */
+    private static final int MIN_UP_DECIMALS = 4;
+    private static final int MAX_UP_DECIMALS = 16;
 
     private final Point3D p0;
     private final Vector vTo;
@@ -49,7 +54,8 @@ public class Camera {
      * @param p0  the camera's position
      * @param vTo the direction it looks to
      * @param vUp its up direction, orthogonal to {@code vTo}
-     * @throws IllegalArgumentException when {@code vTo} and {@code vUp} are not orthogonal
+     * @throws IllegalArgumentException when {@code vTo} and {@code vUp} are not orthogonal; the message
+     *                                  says what {@code vUp} would be ({@link #orthogonalUp})
      */
     public Camera(Point3D p0, Vector vTo, Vector vUp) {
         this.p0 = requireNonNull(p0, "camera position");
@@ -58,8 +64,57 @@ public class Camera {
         this.vTo = vTo.normalized();
         this.vUp = vUp.normalized();
         if (!isZero(this.vTo.dotProduct(this.vUp)))
-            throw new IllegalArgumentException("camera vTo " + vTo + " and vUp " + vUp + " are not orthogonal");
+            throw new IllegalArgumentException("camera vTo " + vTo + " and vUp " + vUp + " are not orthogonal: "
+                    + upHint(vTo, vUp));
         this.vRight = this.vTo.crossProduct(this.vUp).normalize();
+    }
+
+    /** What vUp would be, for the message refusing a vUp that is not orthogonal to vTo. */
+    private static String upHint(Vector vTo, Vector vUp) {
+        try {
+            return "the part of vUp orthogonal to vTo, normalized, is " + orthogonalUp(vTo, vUp);
+        } catch (IllegalArgumentException e) {
+            return "vUp is parallel to vTo, and one orthogonal to it is " + vTo.orthogonal();
+        }
+    }
+
+    /**
+     * The up direction a camera looking along {@code vTo} takes for a {@code vUp} that is not quite
+     * orthogonal to it: the part of {@code vUp} orthogonal to {@code vTo}, normalized, and rounded to
+     * the fewest decimals (4 at least) with which it is still orthogonal to {@code vTo} as the
+     * constructor checks it. {@code orthogonalUp(new Vector(0, -0.1, -1), new Vector(0, 1, 0))} is
+     * (0, 0.995, -0.0995), which a camera looking slightly down accepts.
+     *
+     * @param vTo the direction the camera looks to
+     * @param vUp the up direction wanted
+     * @return a new vector orthogonal to {@code vTo}, of length 1 up to its rounding
+     * @throws IllegalArgumentException when a vector is null, or {@code vUp} is parallel to {@code vTo}
+     *                                  (within a millionth of a radian): no part of it is orthogonal
+     */
+    public static Vector orthogonalUp(Vector vTo, Vector vUp) {
+        Vector to = requireNonNull(vTo, "camera vTo").normalized();
+        Vector up = requireNonNull(vUp, "camera vUp").normalized();
+        double dot = to.dotProduct(up);
+        double x = up.getX() - dot * to.getX();
+        double y = up.getY() - dot * to.getY();
+        double z = up.getZ() - dot * to.getZ();
+        double sine = Math.sqrt(x * x + y * y + z * z);
+        if (sine < PARALLEL_SINE)
+            throw new IllegalArgumentException("camera vUp " + vUp + " is parallel to vTo " + vTo
+                    + ": no part of it is orthogonal to vTo");
+        for (int decimals = MIN_UP_DECIMALS; decimals < MAX_UP_DECIMALS; ++decimals) {
+            Vector rounded = new Vector(round(x / sine, decimals), round(y / sine, decimals),
+                    round(z / sine, decimals));
+            if (isZero(to.dotProduct(rounded.normalized())))
+                return rounded;
+        }
+        return new Vector(x / sine, y / sine, z / sine);
+    }
+
+    /** {@return the number rounded to this many decimals, half up} */
+    private static double round(double value, int decimals) {
+        double scale = Math.pow(10, decimals);
+        return Math.round(value * scale) / scale;
     }
 
     /**

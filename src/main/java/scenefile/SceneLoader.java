@@ -95,9 +95,33 @@ public final class SceneLoader {
         if (camera == null) // the schema's defaults: the course's first camera
             return new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(500, 500)
                     .setVpDistance(100);
-        return build(camera, () -> lens(new Camera(camera.point("p0"), camera.vector("vTo"), camera.vector("vUp"))
+        return build(camera, () -> lens(frame(camera)
                 .setVpSize(camera.number("vp-width"), camera.number("vp-height"))
                 .setVpDistance(camera.number("vp-distance")), camera));
+    }
+
+    /** The camera of its element's p0, vTo and vUp; a vUp not orthogonal to vTo is told what it would be. */
+    private static Camera frame(SceneElement camera) {
+        Vector vTo = camera.vector("vTo");
+        Vector vUp = camera.vector("vUp");
+        try {
+            return new Camera(camera.point("p0"), vTo, vUp);
+        } catch (IllegalArgumentException e) {
+            String given = "vUp=\"" + triple(vUp) + "\" is not orthogonal to vTo=\"" + triple(vTo) + "\"";
+            Vector up;
+            try {
+                up = Camera.orthogonalUp(vTo, vUp);
+            } catch (IllegalArgumentException parallel) {
+                throw camera.error(given + ": it is parallel to vTo; use a vUp orthogonal to vTo, such as vUp=\""
+                        + triple(vTo.orthogonal()) + "\"", e);
+            }
+            throw camera.error(given + "; use vUp=\"" + triple(up) + "\", its part orthogonal to vTo", e);
+        }
+    }
+
+    /** {@return a vector as a scene file writes it, "x y z"} */
+    private static String triple(Vector v) {
+        return SceneWriter.number(v.getX()) + " " + SceneWriter.number(v.getY()) + " " + SceneWriter.number(v.getZ());
     }
 
     /** Gives a camera the depth of field of its element. */

@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Matcher;
@@ -36,10 +37,12 @@ import org.xml.sax.helpers.DefaultHandler;
  * ({@code scenefile/scene.xsd}, shipped in the jar). The first problem stops the reading with a
  * {@link SceneFileException} whose message is one plain line: the schema validator's wording is
  * turned into the scene file's terms ("attribute 'radius' of &lt;sphere&gt; must be a number").
+ * A file may name a schema for editors ({@code xsi:noNamespaceSchemaLocation}, as the example scenes
+ * do); the file it names is never read, and such attributes are not among an element's attributes.
  */
 final class SceneParser {
     /** The schema's resource, beside this class. */
-    private static final String SCHEMA = "scene.xsd";
+    static final String SCHEMA = "scene.xsd";
 
     private static final Schema SCENE_SCHEMA = loadSchema();
 
@@ -97,9 +100,9 @@ final class SceneParser {
     static SceneElement parse(Path file) {
         if (Files.isDirectory(file))
             throw new SceneFileException(file, "is a folder, not a scene file", null);
+        TreeBuilder builder = new TreeBuilder(file);
         try {
             read(file, newParser(null), new LimitsChecker());
-            TreeBuilder builder = new TreeBuilder(file);
             read(file, newParser(SCENE_SCHEMA), builder);
             return builder.root;
         } catch (NoSuchFileException e) {
@@ -108,7 +111,7 @@ final class SceneParser {
             throw new SceneFileException(file, "cannot read the scene file: permission denied", e);
         } catch (SAXParseException e) {
             int[] place = e.getLineNumber() > 0 ? new int[] {e.getLineNumber(), e.getColumnNumber()} : end(file);
-            throw new SceneFileException(file, place[0], place[1], plain(e.getMessage()), e);
+            throw new SceneFileException(file, place[0], place[1], plain(e.getMessage(), builder.openElement()), e);
         } catch (SAXException e) {
             throw new SceneFileException(file, "not a scene file: " + e.getMessage(), e);
         } catch (UnsupportedEncodingException e) {
@@ -171,18 +174,31 @@ final class SceneParser {
      * @return the message, without validator codes
      */
     static String plain(String message) {
+        return plain(message, null);
+    }
+
+    /**
+     * Turns a parser's message into the scene file's terms. An unknown attribute or element names the
+     * nearest valid one ("did you mean 'kD'?") and, when there are at most {@value NearestName#MAX_LISTED},
+     * lists them.
+     *
+     * @param message the parser's message
+     * @param parent  the element the parser was in (the parent of an element it refuses), or null
+     * @return the message, without validator codes
+     */
+    static String plain(String message, String parent) {
         String text = CODE.matcher(message).replaceFirst("");
         Matcher m;
         if ((m = BAD_VALUE.matcher(text)).matches())
             return "attribute '" + m.group(2) + "' of <" + m.group(3) + "> must be "
                     + TYPES.getOrDefault(m.group(4), "a " + m.group(4)) + ", got '" + m.group(1) + "'";
         if ((m = UNKNOWN_ATTRIBUTE.matcher(text)).matches())
-            return "unknown attribute '" + m.group(1) + "' on <" + m.group(2) + ">";
+            return "unknown attribute '" + m.group(1) + "' on <" + m.group(2) + ">" + NearestName.hint(m.group(1),
+                    SchemaNames.scene().attributes(m.group(2)), "'%s'", "<" + m.group(2) + "> has:");
         if ((m = MISSING_ATTRIBUTE.matcher(text)).matches())
             return "<" + m.group(2) + "> needs the attribute '" + m.group(1) + "'";
         if ((m = MISPLACED_ELEMENT.matcher(text)).matches())
-            return "element <" + m.group(1) + "> is unknown or not allowed here"
-                    + (m.group(2) == null ? "" : "; expected one of: " + m.group(2).replace(",", ", ").replace("  ", " "));
+            return misplaced(m.group(1), m.group(2) == null ? List.of() : List.of(m.group(2).split(",\\s*")), parent);
         if ((m = UNKNOWN_ROOT.matcher(text)).matches())
             return m.group(1).equals("scene") ? "<scene> must not have a namespace"
                     : "the root element must be <scene>, not <" + m.group(1) + ">";
@@ -193,6 +209,24 @@ final class SceneParser {
         if (text.startsWith("DOCTYPE is disallowed"))
             return "a scene file must not have a DOCTYPE";
         return text;
+    }
+
+    /**
+     * The message for an element the schema does not allow where it is.
+     *
+     * @param element  the element's name
+     * @param expected the elements the validator expected there, perhaps none
+     * @param parent   the element it is in, or null when not known
+     * @return the message, naming the nearest valid element and the valid ones
+     */
+    private static String misplaced(String element, List<String> expected, String parent) {
+        List<String> allowed = parent == null ? List.of() : SchemaNames.scene().children(parent);
+        if (allowed.contains(element) && !expected.contains(element)) // a second one where one is allowed
+            return "<" + parent + "> may have only one <" + element + ">";
+        String problem = "element <" + element + "> is unknown or not allowed here";
+        if (!expected.isEmpty())
+            return problem + NearestName.hint(element, expected, "<%s>", "expected one of:");
+        return problem + NearestName.hint(element, allowed, "<%s>", "<" + parent + "> has:");
     }
 
     /** A handler that knows where the parser is in the file. */
@@ -246,13 +280,19 @@ final class SceneParser {
             this.file = file;
         }
 
+        /** {@return the name of the element the parser is in, or null before the root and after it} */
+        String openElement() {
+            return open.isEmpty() ? null : open.peek().name();
+        }
+
         @Override
         public void startElement(String uri, String localName, String qName, Attributes attributes)
                 throws SAXException {
             throwPending();
             Map<String, String> values = new LinkedHashMap<>();
             for (int k = 0; k < attributes.getLength(); ++k)
-                values.put(attributes.getLocalName(k), attributes.getValue(k));
+                if (!XMLConstants.W3C_XML_SCHEMA_INSTANCE_NS_URI.equals(attributes.getURI(k))) // the editors' hints
+                    values.put(attributes.getLocalName(k), attributes.getValue(k));
             SceneElement element = new SceneElement(file, localName, values, locator.getLineNumber(),
                     locator.getColumnNumber());
             if (open.isEmpty())

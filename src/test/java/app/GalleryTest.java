@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestImages.differentPixels;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -78,6 +79,28 @@ class GalleryTest {
                     colours.add(image.getPixel(x, y));
             assertTrue(colours.size() > 1, "TC01: " + picture.name() + " is a single flat colour");
         }
+    }
+
+    /**
+     * Test method for {@link Gallery#render(Picture, Path, int)}: a picture rendered on any number of
+     * threads has the same pixels, written into the folder given.
+     */
+    @Test
+    void testRenderOnThreads() {
+        Picture picture = picture("softSphereOnTriangles").withSize(60, 60);
+        ImageWriter allCores = Gallery.render(picture, FOLDER.resolve("cores")).getImageWriter();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 3 threads: the pixels of one per core, in the folder given
+        ImageWriter three = Gallery.render(picture, FOLDER.resolve("three"), 3).getImageWriter();
+        assertEquals(FOLDER.resolve("three").resolve("softSphereOnTriangles.png"), three.getPath(),
+                "TC01: wrong file");
+        assertEquals(0, differentPixels(allCores, three), "TC01: 3 threads changed the picture");
+        // ===== Boundary Values Tests =====
+        // TC11: 1 thread, and 0 (one per core): the same pixels
+        assertEquals(0, differentPixels(allCores, Gallery.render(picture, FOLDER.resolve("one"), 1).getImageWriter()),
+                "TC11: 1 thread changed the picture");
+        assertEquals(0, differentPixels(allCores, Gallery.render(picture, FOLDER.resolve("zero"), 0).getImageWriter()),
+                "TC11: 0 threads (one per core) changed the picture");
     }
 
     /**
@@ -170,11 +193,7 @@ class GalleryTest {
             int height = picture.nY() / 4;
             ImageWriter java = quarter(picture, width, height, quarterFolder.resolve("java"));
             ImageWriter fromFile = quarter(loaded, width, height, quarterFolder.resolve("file"));
-            int different = 0;
-            for (int y = 0; y < height; ++y)
-                for (int x = 0; x < width; ++x)
-                    if (!java.getPixel(x, y).equals(fromFile.getPixel(x, y)))
-                        ++different;
+            int different = differentPixels(java, fromFile);
             assertEquals(0, different, "TC02: " + file + " renders " + different + " pixels unlike its Java picture");
         }
 

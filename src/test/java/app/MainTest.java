@@ -1,6 +1,7 @@
 package app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -16,8 +17,8 @@ import org.junit.jupiter.api.Test;
 import testutil.TestFiles;
 
 /**
- * Tests for {@link Main}: with arguments it runs the render command in this process and returns its exit
- * code (the gallery, with no arguments, is tested by {@link GalleryTest}).
+ * Tests for {@link Main}: it runs the render command in this process and returns its exit code (the
+ * gallery's pictures are tested by {@link GalleryTest}, {@code --gallery} by {@link RenderCommandTest}).
  */
 class MainTest {
     /** Where the test's scene file and picture go. */
@@ -77,5 +78,29 @@ class MainTest {
         code = Main.run(new String[]{missing.toString()}, new PrintWriter(out), new PrintWriter(err), false);
         assertEquals(2, code, "TC11: a missing scene file should exit with 2");
         assertEquals(1, err.toString().lines().count(), "TC11: not one line: " + err);
+        // TC12: no arguments: exit 2, the usage on err (the gallery is rendered only when asked for)
+        out.getBuffer().setLength(0);
+        err.getBuffer().setLength(0);
+        code = Main.run(new String[0], new PrintWriter(out), new PrintWriter(err), false);
+        assertEquals(2, code, "TC12: no arguments should exit with 2");
+        assertTrue(err.toString().startsWith("Usage: java -jar target/raytracer.jar"), "TC12: no usage: " + err);
+        assertEquals("", out.toString(), "TC12: nothing should go to the output stream");
+    }
+
+    /** Test method for {@link Main#isGallery(String[])}. */
+    @Test
+    void testIsGallery() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: --gallery, alone or with a folder, asks for the gallery
+        assertTrue(Main.isGallery(new String[]{"--gallery"}), "TC01: --gallery alone");
+        assertTrue(Main.isGallery(new String[]{"--threads", "2", "--gallery", "out"}), "TC01: --gallery FOLDER");
+        // TC02: a scene file does not
+        assertFalse(Main.isGallery(new String[]{"scenes/a.xml", "--width", "30"}), "TC02: a scene file");
+
+        // ===== Boundary Values Tests =====
+        // TC11: --gallery=FOLDER does; no arguments, and an option that starts alike, do not
+        assertTrue(Main.isGallery(new String[]{"--gallery=out"}), "TC11: --gallery=FOLDER");
+        assertFalse(Main.isGallery(new String[0]), "TC11: no arguments");
+        assertFalse(Main.isGallery(new String[]{"--gallery-x"}), "TC11: --gallery-x is another option");
     }
 }

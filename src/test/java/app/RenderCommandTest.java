@@ -219,11 +219,14 @@ class RenderCommandTest {
         result = render("render40aa", "--width", "40", "--height", "40", "--aa", "2");
         assertEquals(6400, reported(result, "Primary rays:"), "TC02: --aa 2 should trace 6400 primary rays");
 
-        // TC03: on a terminal the bar redraws its line (carriage returns) and ends with a line break
+        // TC03: on a terminal the bar redraws its line (carriage returns) and ends with a line break; the
+        // note on the light's edge (hard shadows) comes before it
         result = run(true, sceneFile.toString(), "-o", FOLDER.resolve("render40term.png").toString(),
                 "--width", "40", "--height", "40");
         assertEquals(0, result.code(), "TC03: wrong exit code");
-        assertTrue(result.err().startsWith("\rRendering"), "TC03: bar not redrawn in place: " + result.err());
+        String bar = result.err().substring(result.err().indexOf(System.lineSeparator()) + System.lineSeparator().length());
+        assertTrue(result.err().startsWith(sceneFile + ": <point-light> has edge 80"), "TC03: " + result.err());
+        assertTrue(bar.startsWith("\rRendering"), "TC03: bar not redrawn in place: " + result.err());
         assertTrue(result.err().endsWith(System.lineSeparator()), "TC03: the bar's line is not ended");
         assertEquals(1600, reported(result, "Primary rays:"), "TC03: wrong primary ray count");
 
@@ -481,6 +484,107 @@ class RenderCommandTest {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    /**
+     * Test method for {@link RenderCommand#call()} with no scene file: no arguments print the usage, and
+     * {@code --gallery [FOLDER]} renders the gallery (its bad uses are one line each).
+     */
+    @Test
+    void testUsageAndGallery() throws IOException {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: no arguments: exit 2, the usage on err (the synopsis, SCENE.xml and --gallery), nothing on out
+        Result result = run();
+        assertEquals(2, result.code(), "TC01: no arguments should exit with 2");
+        assertTrue(result.err().startsWith("Usage: java -jar target/raytracer.jar"), "TC01: no usage: " + result.err());
+        String usage = result.err().replaceAll("\\s+", " ");
+        for (String part : List.of("[SCENE.xml]", "--gallery[=FOLDER]", "Exit codes:"))
+            assertTrue(usage.contains(part), "TC01: the usage does not show " + part + ": " + result.err());
+        assertEquals("", result.out(), "TC01: the usage must go to the error stream");
+        // TC02: options but no scene file: one line naming what is missing
+        result = run("--width", "30");
+        assertEquals(2, result.code(), "TC02: no scene file should exit with 2");
+        assertOneLine(result, "TC02");
+        assertTrue(result.err().startsWith("Missing required parameter: 'SCENE.xml' (or --gallery)"),
+                "TC02: wrong message: " + result.err());
+        // TC03: --gallery into a folder that cannot be made: one line naming the first picture, nothing written
+        Path notAFolder = Files.writeString(freshFolder("gallery").resolve("file.txt"), "not a folder");
+        result = run("--gallery", notAFolder.toString(), "--threads", "1");
+        assertEquals(2, result.code(), "TC03: an unwritable gallery folder should exit with 2");
+        assertOneLine(result, "TC03");
+        assertTrue(result.err().startsWith(notAFolder.resolve("baseRenderTwoColors.png") + ": cannot write image"),
+                "TC03: the line must name the first picture: " + result.err());
+        // TC04: --gallery with a scene file, or with an option of a scene's: one line each
+        result = run("--gallery", FOLDER.resolve("gallery").toString(), sceneFile.toString());
+        assertEquals(2, result.code(), "TC04: --gallery with a scene file should exit with 2");
+        assertOneLine(result, "TC04");
+        assertTrue(result.err().startsWith("give a scene file or --gallery, not both"), "TC04: " + result.err());
+        result = run("--gallery", FOLDER.resolve("gallery").toString(), "--width", "30");
+        assertEquals(2, result.code(), "TC04: --gallery with --width should exit with 2");
+        assertOneLine(result, "TC04");
+        assertTrue(result.err().startsWith("--width does not go with --gallery"), "TC04: " + result.err());
+        try (var files = Files.list(FOLDER.resolve("gallery"))) {
+            assertEquals(List.of(notAFolder), files.toList(), "TC04: a picture was written");
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: --gallery without a folder: images/, the folder the gallery is kept in (parsed, not rendered)
+        CommandLine commandLine = new CommandLine(new RenderCommand());
+        assertEquals(Path.of("images"), commandLine.parseArgs("--gallery").matchedOptionValue("--gallery", null),
+                "TC11: --gallery alone must render into images/");
+        // TC12: --gallery with --threads out of bounds: one line naming --threads
+        result = run("--gallery", FOLDER.resolve("gallery").toString(), "--threads", "-1");
+        assertEquals(2, result.code(), "TC12: --threads -1 should exit with 2");
+        assertOneLine(result, "TC12");
+        assertTrue(result.err().startsWith("--threads must be 0 (one per core) to"), "TC12: " + result.err());
+    }
+
+    /**
+     * Test method for {@link RenderCommand#call()}: a light with an edge while soft shadows are off gets
+     * one note on the error stream (its square is ignored), which {@code --quiet} silences.
+     */
+    @Test
+    void testIgnoredEdgeNote() {
+        String note = sceneFile + ": <point-light> has edge 80 but soft shadows are off: add soft-shadows=\"true\""
+                + " to <render> or --soft-shadows";
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the test scene (hard shadows, a light of edge 80): the note, once, before the bar
+        Result result = render("note", "--width", "20");
+        assertEquals(note, result.errLines().get(0), "TC01: wrong note: " + result.err());
+        assertEquals(1, result.errLines().stream().filter(line -> line.contains("has edge")).count(),
+                "TC01: the note must be printed once: " + result.err());
+        assertFalse(result.out().contains("has edge"), "TC01: the note must go to the error stream");
+        // TC02: --soft-shadows: the edge is used, no note
+        result = render("note-soft", "--width", "20", "--soft-shadows", "--beams", "2");
+        assertFalse(result.err().contains("has edge"), "TC02: no note with soft shadows on: " + result.err());
+        // TC03: a file with soft shadows on: no note; --no-soft-shadows on it: the note
+        Path soft = writeScene("noteSoft.xml", "<render soft-shadows=\"true\" beams=\"2\"/>");
+        String png = FOLDER.resolve("note-file.png").toString();
+        result = run(soft.toString(), "-o", png, "--width", "20");
+        assertEquals(0, result.code(), "TC03: wrong exit code: " + result.err());
+        assertFalse(result.err().contains("has edge"), "TC03: no note with the file's soft shadows: " + result.err());
+        result = run(soft.toString(), "-o", png, "--width", "20", "--no-soft-shadows");
+        assertTrue(result.errLines().get(0).startsWith(soft + ": <point-light> has edge 80 but soft shadows are off"),
+                "TC03: --no-soft-shadows must give the note: " + result.err());
+        // TC04: lights without an edge: no note
+        Path pointLights = TestFiles.write(FOLDER, "noteNoEdge.xml", SCENE.formatted("").replace(" edge=\"80\"", ""));
+        result = run(pointLights.toString(), "-o", png, "--width", "20");
+        assertEquals(0, result.code(), "TC04: wrong exit code: " + result.err());
+        assertFalse(result.err().contains("has edge"), "TC04: no note without an edge: " + result.err());
+
+        // ===== Boundary Values Tests =====
+        // TC11: --quiet silences the note
+        result = run(sceneFile.toString(), "-o", png, "--width", "20", "--quiet");
+        assertEquals("", result.out() + result.err(), "TC11: --quiet must silence the note");
+        // TC12: a spot light of edge 0 first, then one of edge 2.5: the note names the second, once
+        Path second = TestFiles.write(FOLDER, "noteSecond.xml", SCENE.formatted("").replace("<lights>", "<lights>"
+                + "<spot-light color=\"100 100 100\" position=\"0 0 300\" direction=\"0 0 -1\"/>")
+                .replace("edge=\"80\"", "edge=\"2.5\""));
+        result = run(second.toString(), "-o", png, "--width", "20");
+        assertEquals(second + ": <point-light> has edge 2.5 but soft shadows are off: add soft-shadows=\"true\" to"
+                + " <render> or --soft-shadows", result.errLines().get(0), "TC12: wrong note: " + result.err());
+        assertEquals(1, result.errLines().stream().filter(line -> line.contains("has edge")).count(),
+                "TC12: one note for the scene: " + result.err());
     }
 
     /** Test method for the image formats: the output file's extension chooses PNG, JPEG or BMP. */

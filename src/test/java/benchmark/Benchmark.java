@@ -27,7 +27,7 @@ import scenefile.ObjMesh;
 import testutil.TestMeshes;
 
 /**
- * The project's speed benchmark (SPEC §8). It renders the reference scenes: S (three spheres on a
+ * The project's speed benchmark (docs/benchmarks.md). It renders the reference scenes: S (three spheres on a
  * floor, one square light of edge 20, soft shadows with 9 × 9 + 1 shadow rays, 800 × 800) and M (the
  * same with every sphere tessellated into a triangle mesh); at mesh scale G10k, G100k and G1M (a
  * bumpy {@link Terrain} of about 10k, 100k and 1M triangles, 400 × 400, a light of edge 60) and F2
@@ -306,7 +306,7 @@ public final class Benchmark {
             case "SDOF" -> camera.setApertureSize(APERTURE).setFocalDistance(1000).setSqrtApertureRays(APERTURE_RAYS);
             case "SAA" -> render.setAntiAliasing(ANTI_ALIASING);
             case "SAAA" -> render.setAntiAliasing(ANTI_ALIASING).setAdaptiveSuperSampling(true);
-            default -> { } // the reference scenes as SPEC §8 gives them
+            default -> { } // the reference scenes as docs/benchmarks.md gives them
         }
     }
 

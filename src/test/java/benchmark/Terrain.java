@@ -7,7 +7,7 @@ import geometries.TriangleMesh;
 import primitives.Point3D;
 
 /**
- * The benchmark's bumpy terrain (SPEC §8, scenes G&lt;n&gt;): the heightfield
+ * The benchmark's bumpy terrain (scenes G&lt;n&gt; of docs/benchmarks.md): the heightfield
  * {@code y = −45.5 + 2.5·sin(0.3x)·cos(0.25z) + 1.5·sin(0.11x + 0.7)·sin(0.13z)} over
  * x ∈ [−200, 200], z ∈ [−1500, 340], cut into a grid of cells about as long as they are wide, each
  * cell split into two triangles along its diagonal, stored as a flat {@link TriangleMesh} (neighbouring

@@ -68,6 +68,11 @@ class CameraTest {
         e = assertThrows(IllegalArgumentException.class, () -> new Camera(Point3D.ZERO, new Vector(0, 0, -1), null),
                 "TC04: null vUp accepted");
         assertMessage(e, "vUp", "TC04");
+        // TC05: the message says what vUp would be: its part orthogonal to vTo
+        e = assertThrows(IllegalArgumentException.class,
+                () -> new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 1)),
+                "TC05: non-orthogonal vTo and vUp accepted");
+        assertMessage(e, "the part of vUp orthogonal to vTo, normalized, is ->(0.0, 1.0, 0.0)", "TC05");
 
         // ===== Boundary Values Tests =====
         // TC10: vTo parallel to vUp is rejected
@@ -75,11 +80,55 @@ class CameraTest {
                 () -> new Camera(Point3D.ZERO, new Vector(0, 1, 0), new Vector(0, 2, 0)),
                 "TC10: parallel vTo and vUp accepted");
         assertMessage(e, "orthogonal", "TC10");
+        assertMessage(e, "vUp is parallel to vTo, and one orthogonal to it is", "TC10");
         // TC11: vTo almost orthogonal (dot product 1e-3 after normalising) is rejected
         e = assertThrows(IllegalArgumentException.class,
                 () -> new Camera(Point3D.ZERO, new Vector(0, 0.001, -1), new Vector(0, 1, 0)),
                 "TC11: nearly orthogonal vTo and vUp accepted");
         assertMessage(e, "orthogonal", "TC11");
+    }
+
+    /** Test method for {@link renderer.Camera#orthogonalUp(Vector, Vector)}. */
+    @Test
+    void testOrthogonalUp() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: vUp (0, 1, 1) looking down -z: (0, 1, 0)
+        assertEquals(new Vector(0, 1, 0), Camera.orthogonalUp(new Vector(0, 0, -1), new Vector(0, 1, 1)),
+                "TC01: wrong up vector");
+        // TC02: looking slightly down, vUp (0, 1, 0): (0, 0.995, -0.0995) to 4 decimals, which a camera takes
+        Vector vTo = new Vector(0, -0.1, -1);
+        Vector up = Camera.orthogonalUp(vTo, new Vector(0, 1, 0));
+        assertEquals(0, up.getX(), 0, "TC02: wrong x");
+        assertEquals(0.995, up.getY(), 0, "TC02: y must be rounded to 0.995");
+        assertEquals(-0.0995, up.getZ(), 0, "TC02: z must be rounded to -0.0995");
+        assertEquals(up.normalized(), new Camera(Point3D.ZERO, vTo, up).getVUp(), "TC02: a camera must take it");
+        // TC03: an oblique vTo (1, 2, 3): 5 decimals are needed, the camera takes them, the vector is unit to 1e-5
+        vTo = new Vector(1, 2, 3);
+        up = Camera.orthogonalUp(vTo, new Vector(0, 1, 0));
+        assertEquals(new Vector(-0.16903, 0.84515, -0.50709), up, "TC03: wrong up vector");
+        assertEquals(-0.16903, up.getX(), 0, "TC03: x must be rounded to 5 decimals");
+        assertEquals(1, up.length(), 1e-5, "TC03: not of length 1 up to its rounding");
+        assertEquals(0, new Camera(Point3D.ZERO, vTo, up).getVTo().dotProduct(up.normalized()), 1e-10,
+                "TC03: a camera must take it");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a vUp already orthogonal, of length 2: the unit vector along it
+        assertEquals(new Vector(0, 1, 0), Camera.orthogonalUp(new Vector(0, 0, -1), new Vector(0, 2, 0)),
+                "TC11: an orthogonal vUp must stay, normalized");
+        // TC12: vUp parallel to vTo, either way, or within a millionth of a radian: refused
+        for (Vector parallel : new Vector[] { new Vector(0, 0, -3), new Vector(0, 0, 1), new Vector(0, 1e-7, -1) }) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> Camera.orthogonalUp(new Vector(0, 0, -1), parallel), "TC12: parallel vUp accepted");
+            assertMessage(e, "is parallel to vTo", "TC12");
+        }
+        // TC13: a vUp a hundred-thousandth off: (0, 1, 0)
+        assertEquals(new Vector(0, 1, 0), Camera.orthogonalUp(new Vector(0, 0, -1), new Vector(0, 1, 1e-5)),
+                "TC13: wrong up vector");
+        // TC14: null: refused with the vector's name
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> Camera.orthogonalUp(null, new Vector(0, 1, 0)),
+                "TC14: null vTo accepted"), "vTo", "TC14");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> Camera.orthogonalUp(new Vector(0, 0, 1), null),
+                "TC14: null vUp accepted"), "vUp", "TC14");
     }
 
     /**

@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Unit tests for {@link PreviewWindow} without a display (the suite runs headless, see the pom); the
- * window itself is checked by hand under a virtual display (README, "Scene files and the command line").
+ * window itself is checked by hand under a virtual display (docs/testing.md).
  */
 class PreviewWindowTest {
 

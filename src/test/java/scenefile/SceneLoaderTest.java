@@ -521,10 +521,14 @@ class SceneLoaderTest {
         assertBadFile(file("doctype.xml", "<!DOCTYPE scene [<!ENTITY x SYSTEM \"file:///etc/passwd\">]>\n<scene name=\"&x;\"/>"),
                 1, "a scene file must not have a DOCTYPE", "TC15");
         // TC16: a second <camera>
-        assertBadFile(file("two-cameras.xml", "<scene>\n<camera/>\n<camera/>\n</scene>"), 3, "element <camera> is unknown or not allowed here", "TC16");
+        assertBadFile(file("two-cameras.xml", "<scene>\n<camera/>\n<camera/>\n</scene>"), 3,
+                "<scene> may have only one <camera>", "TC16");
         // TC17: a boolean that is not true or false
         assertBadFile(file("flag.xml", "<scene><render soft-shadows=\"yes\"/></scene>"),
                 1, "attribute 'soft-shadows' of <render> must be true or false, got 'yes'", "TC17");
+        // TC18: a misspelt attribute names the nearest valid one
+        assertBadFile(file("kd.xml", "<scene>\n<geometries>\n<plane q0=\"0 0 0\" normal=\"0 1 0\" kd=\"0.5\"/>\n"
+                + "</geometries>\n</scene>\n"), 3, "unknown attribute 'kd' on <plane>; did you mean 'kD'?", "TC18");
         // ===== Boundary Values Tests =====
         // TC21: an empty file
         assertBadFile(file("empty.xml", ""), 1, "Premature end of file", "TC21");
@@ -557,6 +561,40 @@ class SceneLoaderTest {
         // TC28: an image too large to hold, at the <image>'s line
         assertBadFile(file("image.xml", "<scene>\n<image width=\"2147483647\" height=\"2\"/>\n</scene>"), 2,
                 "<image>: image size 2147483647x2 is too large", "TC28");
+    }
+
+    /**
+     * Test method for {@link SceneLoader#load(Path)}: a camera whose vUp is not orthogonal to vTo is
+     * told the vUp it would take, which then loads.
+     */
+    @Test
+    void testCameraUp() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: vUp "0 1 1" looking down -z: its part orthogonal to vTo is "0 1 0"
+        assertBadFile(file("up-slanted.xml", "<scene>\n<camera vTo=\"0 0 -1\" vUp=\"0 1 1\"/>\n</scene>"), 2,
+                "<camera>: vUp=\"0 1 1\" is not orthogonal to vTo=\"0 0 -1\"; use vUp=\"0 1 0\", its part orthogonal"
+                        + " to vTo", "TC01");
+        // TC02: a camera looking slightly down with vUp "0 1 0": "0 0.995 -0.0995", which loads
+        assertBadFile(file("up-down.xml", "<scene>\n<camera vTo=\"0 -0.1 -1\" vUp=\"0 1 0\"/>\n</scene>"), 2,
+                "use vUp=\"0 0.995 -0.0995\"", "TC02");
+        Camera camera = SceneLoader.load(file("up-down-fixed.xml", "<scene><camera vTo=\"0 -0.1 -1\""
+                + " vUp=\"0 0.995 -0.0995\"/></scene>")).camera();
+        assertEquals(0, camera.getVTo().dotProduct(camera.getVUp()), 1e-10, "TC02: the vUp given must be orthogonal");
+        // TC03: an oblique vTo "1 2 3": the vUp given has a few decimals, and loads
+        SceneFileException e = assertBadFile(file("up-oblique.xml", "<scene>\n<camera vTo=\"1 2 3\" vUp=\"0 1 0\"/>"
+                + "\n</scene>"), 2, "use vUp=\"-0.16903 0.84515 -0.50709\"", "TC03");
+        assertInstanceOf(IllegalArgumentException.class, e.getCause(), "TC03: the camera's exception is the cause");
+        assertEquals("camera", SceneLoader.load(file("up-oblique-fixed.xml", "<scene name=\"camera\"><camera"
+                + " vTo=\"1 2 3\" vUp=\"-0.16903 0.84515 -0.50709\"/></scene>")).name(), "TC03: the vUp given must load");
+
+        // ===== Boundary Values Tests =====
+        // TC11: vUp parallel to vTo: no part of it is orthogonal; a vUp that is is named
+        assertBadFile(file("up-parallel.xml", "<scene>\n<camera vTo=\"0 1 0\" vUp=\"0 2 0\"/>\n</scene>"), 2,
+                "<camera>: vUp=\"0 2 0\" is not orthogonal to vTo=\"0 1 0\": it is parallel to vTo; use a vUp"
+                        + " orthogonal to vTo, such as vUp=\"0 0 -1\"", "TC11");
+        // TC12: a vUp off by 1e-5: the rounded vUp "0 1 0"
+        assertBadFile(file("up-almost.xml", "<scene>\n<camera vTo=\"0 0 -1\" vUp=\"0 1 0.00001\"/>\n</scene>"), 2,
+                "is not orthogonal to vTo=\"0 0 -1\"; use vUp=\"0 1 0\"", "TC12");
     }
 
     /** Test method for {@link SceneLoader#load(Path)}: extreme numbers that are meaningful are read. */

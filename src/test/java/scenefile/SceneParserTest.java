@@ -179,6 +179,68 @@ class SceneParserTest {
         assertEquals("", SceneParser.plain(""), "TC14: the empty message must stay empty");
     }
 
+    /**
+     * Test method for {@link SceneParser#plain(String, String)}: an unknown attribute or element names the
+     * nearest valid one and, when there are few, all of them.
+     */
+    @Test
+    void testPlainSuggestions() {
+        String camra = "cvc-complex-type.2.4.a: Invalid content was found starting with element 'camra'. "
+                + "One of '{camera, image}' is expected.";
+        String secondCamera = "cvc-complex-type.2.4.a: Invalid content was found starting with element 'camera'. "
+                + "One of '{image, render, ambient-light, lights, geometries}' is expected.";
+        String noneExpected = "cvc-complex-type.2.4.d: Invalid content was found starting with element 'foo'. "
+                + "No child element is expected at this point.";
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an attribute that differs in case: "did you mean 'kD'?" (<plane> has 10 attributes: no list)
+        assertEquals("unknown attribute 'kd' on <plane>; did you mean 'kD'?",
+                SceneParser.plain(unknownAttribute("kd", "plane"), "geometries"), "TC01: wrong message");
+        // TC02: two letters swapped on an element of 3 attributes: the nearest and the list
+        assertEquals("unknown attribute 'widht' on <image>; did you mean 'width'? <image> has: width, height, grid",
+                SceneParser.plain(unknownAttribute("widht", "image"), "scene"), "TC02: wrong message");
+        // TC03: nothing near, few attributes: the list alone
+        assertEquals("unknown attribute 'size' on <image>; <image> has: width, height, grid",
+                SceneParser.plain(unknownAttribute("size", "image"), "scene"), "TC03: wrong message");
+        // TC04: a misspelt element: the nearest of the expected ones, then the list
+        assertEquals("element <camra> is unknown or not allowed here; did you mean <camera>? Expected one of: camera,"
+                + " image", SceneParser.plain(camra, "scene"), "TC04: wrong message");
+        // TC05: a second element where one is allowed: said so
+        assertEquals("<scene> may have only one <camera>", SceneParser.plain(secondCamera, "scene"),
+                "TC05: wrong message");
+
+        // ===== Boundary Values Tests =====
+        // TC11: nothing near on <sphere> (10 attributes): the message alone
+        assertEquals("unknown attribute 'foo' on <sphere>", SceneParser.plain(unknownAttribute("foo", "sphere"),
+                "geometries"), "TC11: wrong message");
+        // TC12: no element expected, in <scene>: its children listed; with no parent known, nothing added
+        assertEquals("element <foo> is unknown or not allowed here; <scene> has: camera, image, render, ambient-light,"
+                + " lights, geometries", SceneParser.plain(noneExpected, "scene"), "TC12: wrong message");
+        assertEquals("element <foo> is unknown or not allowed here", SceneParser.plain(noneExpected, null),
+                "TC12: wrong message without a parent");
+        // TC13: the second-element message needs the parent: without it, the expected list as before
+        assertEquals("element <camera> is unknown or not allowed here; expected one of: image, render,"
+                + " ambient-light, lights, geometries", SceneParser.plain(secondCamera), "TC13: wrong message");
+        // TC14: an unknown element that is no slip of the keyboard (<cube>, <tube> one letter away): no guess
+        assertEquals("element <cube> is unknown or not allowed here; expected one of: sphere, tube",
+                SceneParser.plain("cvc-complex-type.2.4.a: Invalid content was found starting with element 'cube'. "
+                        + "One of '{sphere, tube}' is expected.", "geometries"), "TC14: wrong message");
+        // TC15: a file with a misspelt attribute: the message with its place
+        String plane = "<geometries><plane q0=\"0 0 0\" normal=\"0 1 0\" kd=\"1\"/></geometries>";
+        Path kd = file("kd.xml", "<scene>\n" + plane + "\n</scene>\n");
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(kd), "TC15: kd");
+        assertEquals(kd + ":2:" + columnAfter(plane, "/>") + ": unknown attribute 'kd' on <plane>; did you mean 'kD'?",
+                e.getMessage(), "TC15: wrong message");
+        Path twice = file("twice.xml", "<scene>\n<image/>\n<image/>\n</scene>\n");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(twice), "TC15: two images");
+        assertEquals(twice + ":3:9: <scene> may have only one <image>", e.getMessage(), "TC15: wrong message");
+    }
+
+    /** The validator's message for an attribute an element does not have. */
+    private static String unknownAttribute(String attribute, String element) {
+        return "cvc-complex-type.3.2.2: Attribute '" + attribute + "' is not allowed to appear in element '" + element
+                + "'.";
+    }
+
     /** Test method for {@link SceneParser#parse(Path)}: the tree of a small valid file. */
     @Test
     void testParseTree() {
@@ -244,6 +306,35 @@ class SceneParserTest {
         assertFalse(empty.has("name"), "TC12: the name has no default");
         assertEquals(1, line(empty), "TC12: <scene/> must be at line 1");
         assertEquals(columnAfter("<scene/>", "/>"), column(empty), "TC12: <scene/> column must be 9");
+    }
+
+    /**
+     * Test method for {@link SceneParser#parse(Path)}: a file that names a schema for editors
+     * ({@code xsi:noNamespaceSchemaLocation}) is checked against the shipped schema, whatever it names.
+     */
+    @Test
+    void testSchemaLocation() {
+        String xsi = "<scene xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" xsi:noNamespaceSchemaLocation=\"";
+        String body = "\" name=\"hinted\"><geometries><sphere center=\"0 0 0\" radius=\"5\"/></geometries></scene>";
+        Path schema = Path.of("src", "main", "resources", "scenefile", "scene.xsd").toAbsolutePath();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the project's own schema named: read, the hint not among the scene's attributes
+        SceneElement scene = SceneParser.parse(file("hinted.xml", xsi + schema.toUri() + body));
+        assertEquals("hinted", scene.text("name"), "TC01: wrong scene name");
+        assertFalse(scene.has("noNamespaceSchemaLocation"), "TC01: the hint must not be an attribute of <scene>");
+        assertEquals(5, scene.child("geometries").child("sphere").number("radius"), 0, "TC01: wrong radius");
+        // TC02: a schema named that allows <scene> no attribute and no child: the shipped one is checked
+        Path other = file("other.xsd", "<xs:schema xmlns:xs=\"http://www.w3.org/2001/XMLSchema\">"
+                + "<xs:element name=\"scene\"><xs:complexType/></xs:element></xs:schema>");
+        file("bad-by-other.xml", xsi + other.toAbsolutePath().toUri() + body);
+        assertEquals("hinted", SceneParser.parse(FOLDER.resolve("bad-by-other.xml")).text("name"),
+                "TC02: the named schema must not replace the shipped one");
+        // ===== Boundary Values Tests =====
+        // TC11: a schema that is not there, or on the web: never read, the file loads
+        assertEquals("hinted", SceneParser.parse(file("missing-xsd.xml", xsi + "no/such/scene.xsd" + body))
+                .text("name"), "TC11: a missing schema file must not matter");
+        assertEquals("hinted", SceneParser.parse(file("web-xsd.xml", xsi + "http://localhost:9/scene.xsd" + body))
+                .text("name"), "TC11: a schema on the web must not be fetched");
     }
 
     /** Test method for {@link SceneParser#parse(Path)}: bad files give one plain line with the place. */

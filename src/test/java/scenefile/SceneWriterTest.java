@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestImages.differentPixels;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -106,16 +107,6 @@ class SceneWriterTest {
         Camera camera = new Camera(new Point3D(10, 20, 600), new Vector(0, -0.1, -1), new Vector(0, 1, -0.1))
                 .setVpSize(220, 200).setVpDistance(500);
         return new Picture("everything", 60, 60, scene, camera, 20, new RenderSettings(true, true, 3, 2, 7));
-    }
-
-    /** The number of pixels that differ between two rendered images of the same size. */
-    private static int differentPixels(ImageWriter a, ImageWriter b) {
-        int count = 0;
-        for (int y = 0; y < a.getNy(); ++y)
-            for (int x = 0; x < a.getNx(); ++x)
-                if (!a.getPixel(x, y).equals(b.getPixel(x, y)))
-                    ++count;
-        return count;
     }
 
     /** Renders a picture into target/test-scenes under a file name. */
