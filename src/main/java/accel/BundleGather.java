@@ -43,7 +43,7 @@ final class BundleGather {
             if (!culling || body.mayMeet(frustum))
                 query.gatheredUnbounded[found++] = body;
         query.unboundedCount = found;
-        query.blockerCount = 0;
+        query.coreCount = 0;
         query.blockersTried = false;
         query.blocked = false;
         query.gatheredCount = 0;

@@ -19,12 +19,16 @@ import primitives.Parallel;
 final class ClosedMeshBlockers {
     /** The most closed meshes whose cores the gather tries: those of the largest cores. */
     static final int MAX_BLOCKERS = 16;
+    /** The most cores, of all the blockers together, the gather tries: the largest. */
+    static final int MAX_CORES = 32;
 
     /**
      * The closed parts that have a core, the largest cores first: of the tree's meshes
      * ({@link ClosedParts}), its course-style {@link Triangle} objects among them ({@link PackedTriangles}).
      */
     private final Blocker[] blockers;
+    /** The blockers' cores, the largest first. */
+    private final Core[] cores;
     /** Per blocker of triangles: whether all of them were opaque when {@link #readMaterials} last looked. */
     private final boolean[] opaque;
 
@@ -33,6 +37,17 @@ final class ClosedMeshBlockers {
      * triangles, then the triangles; and the part, with its cores and its box.
      */
     private record Blocker(TriangleMesh mesh, Triangle[] triangles, ClosedParts.Part part) {
+    }
+
+    /**
+     * A core of a blocker: its inner ball, or one of its inner boxes.
+     *
+     * @param blocker the blocker's place in {@link #blockers}
+     * @param ball    the ball, or null for a box
+     * @param box     the box: the ball's, or the inner box, {minX, minY, minZ, maxX, maxY, maxZ}
+     * @param size    the ball's radius, or half the box's shortest side
+     */
+    private record Core(int blocker, InnerBall ball, double[] box, double size) {
     }
 
     /**
@@ -56,8 +71,25 @@ final class ClosedMeshBlockers {
             }
         this.blockers = found.stream().sorted(Comparator.comparingDouble((Blocker blocker) -> blocker.part.coreSize())
                 .reversed()).limit(MAX_BLOCKERS).toArray(Blocker[]::new);
+        this.cores = cores(blockers);
         this.opaque = new boolean[blockers.length];
         readMaterials();
+    }
+
+    /** {@return the largest {@value #MAX_CORES} cores of some blockers, the largest first} */
+    private static Core[] cores(Blocker[] blockers) {
+        List<Core> all = new ArrayList<>();
+        for (int s = 0; s < blockers.length; ++s) {
+            ClosedParts.Part part = blockers[s].part;
+            if (part.ball() != null)
+                all.add(new Core(s, part.ball(), part.ball().box(), part.ball().radius));
+            double[] inner = part.innerBoxes();
+            for (int b = 0; b < inner.length; b += 6) {
+                all.add(new Core(s, null, Arrays.copyOfRange(inner, b, b + 6), InnerBoxes.halfShortestSide(inner, b)));
+            }
+        }
+        return all.stream().sorted(Comparator.comparingDouble(Core::size).reversed()).limit(MAX_CORES)
+                .toArray(Core[]::new);
     }
 
     /**
@@ -77,8 +109,9 @@ final class ClosedMeshBlockers {
     }
 
     /**
-     * Tries the closed opaque meshes on the query's bundle: keeps those whose boxes the pyramid meets,
-     * its base outside them, unless the core of one lies across every ray (the bundle is then blocked).
+     * Tries the cores of the closed opaque meshes on the query's bundle: keeps those the pyramid meets,
+     * of meshes whose boxes it meets with its base outside them, unless one lies across every ray (the
+     * bundle is then blocked).
      *
      * @param query this thread's scratch space, its frustum set
      * @return true when one lies across every ray of the bundle
@@ -86,71 +119,48 @@ final class ClosedMeshBlockers {
     boolean tryOn(Query query) {
         query.blockersTried = true;
         ShadowFrustum frustum = query.frustum;
-        int count = 0;
+        int candidates = 0; // a bit per blocker: opaque, its box met by the pyramid, the base outside it
         for (int s = 0; s < blockers.length; ++s) {
-            ClosedParts.Part part = blockers[s].part;
-            if (!isOpaque(s) || !frustum.meetsBox(part.box(), 0) || !CoreCrossing.baseOutside(frustum, part.box(), 0))
+            double[] box = blockers[s].part.box();
+            if (isOpaque(s) && frustum.meetsBox(box, 0) && CoreCrossing.baseOutside(frustum, box, 0))
+                candidates |= 1 << s;
+        }
+        int count = 0;
+        for (int c = 0; c < cores.length && candidates != 0; ++c) {
+            Core core = cores[c];
+            if ((candidates & 1 << core.blocker) == 0 || !frustum.meetsBox(core.box, 0))
                 continue;
-            if (crossesCore(frustum, part)) {
+            if (core.ball != null ? CoreCrossing.sectionInside(frustum, core.ball)
+                    : CoreCrossing.crossesBox(frustum, core.box, 0)) {
                 query.blocked = true;
                 return true;
             }
-            query.blockerList[count++] = s;
+            query.coreList[count++] = c;
         }
-        query.blockerCount = count;
-        return false;
-    }
-
-    /** Whether every ray of the pyramid passes through the part's inner ball or one of its inner boxes. */
-    private static boolean crossesCore(ShadowFrustum frustum, ClosedParts.Part part) {
-        if (part.ball() != null && CoreCrossing.sectionInside(frustum, part.ball()))
-            return true;
-        double[] inner = part.innerBoxes();
-        for (int b = 0; b < inner.length; b += 6)
-            if (CoreCrossing.crossesBox(frustum, inner, b))
-                return true;
+        query.coreCount = count;
         return false;
     }
 
     /**
      * Answers 0 for each unblocked ray of the packet, {@link RayState#invert inverted}, that passes
-     * through a core of a closed mesh the gather kept (one the pyramid meets): it crosses that closed
-     * opaque mesh.
+     * through a core the gather kept: it crosses that core's closed opaque mesh.
      *
      * @param query this thread's scratch space, as the last gather left it, its packet filled
      * @return the number of rays so blocked
      */
     int blockPacket(Query query) {
+        Packet packet = query.packet;
         int blocked = 0;
-        for (int k = 0; k < query.blockerCount; ++k) {
-            ClosedParts.Part part = blockers[query.blockerList[k]].part;
-            InnerBall ball = part.ball();
-            if (ball != null && query.frustum.meetsBox(ball.box(), 0))
-                blocked += blockThrough(query.packet, ball, null, 0);
-            double[] inner = part.innerBoxes();
-            for (int b = 0; b < inner.length; b += 6)
-                if (query.frustum.meetsBox(inner, b))
-                    blocked += blockThrough(query.packet, null, inner, b);
-        }
-        return blocked;
-    }
-
-    /**
-     * Answers 0 for each unblocked ray of the packet through a ball, or else through a box.
-     *
-     * @param ball  the ball, or null for the box
-     * @param boxes the boxes, {minX, minY, minZ, maxX, maxY, maxZ} each
-     * @param b     where the box lies in them
-     * @return the number of rays so blocked
-     */
-    private static int blockThrough(Packet packet, InnerBall ball, double[] boxes, int b) {
-        int blocked = 0;
-        for (int r = 0; r < packet.size; ++r) {
-            RayState ray = packet.rays[r];
-            if (ray.ktr > 0 && (ball != null ? ball.crossedBy(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT)
-                    : ray.boxEntry(boxes, b, ray.maxT) != RayState.MISSED)) {
-                ray.ktr = 0;
-                ++blocked;
+        for (int k = 0; k < query.coreCount; ++k) {
+            Core core = cores[query.coreList[k]];
+            for (int r = 0; r < packet.size; ++r) {
+                RayState ray = packet.rays[r];
+                if (ray.ktr > 0 && (core.ball != null
+                        ? core.ball.crossedBy(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT)
+                        : ray.boxEntry(core.box, 0, ray.maxT) != RayState.MISSED)) {
+                    ray.ktr = 0;
+                    ++blocked;
+                }
             }
         }
         return blocked;

@@ -42,8 +42,7 @@ final class ClosedParts {
         double coreSize() {
             double size = ball == null ? 0 : ball.radius;
             for (int b = 0; b < innerBoxes.length; b += 6)
-                size = Math.max(size, Math.min(innerBoxes[b + 3] - innerBoxes[b],
-                        Math.min(innerBoxes[b + 4] - innerBoxes[b + 1], innerBoxes[b + 5] - innerBoxes[b + 2])) / 2);
+                size = Math.max(size, InnerBoxes.halfShortestSide(innerBoxes, b));
             return size;
         }
     }

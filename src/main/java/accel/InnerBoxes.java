@@ -73,6 +73,17 @@ final class InnerBoxes {
         return grid.boxes(scale(box));
     }
 
+    /**
+     * Half the shortest side of a box: the radius of the largest ball it holds.
+     *
+     * @param boxes the boxes, {minX, minY, minZ, maxX, maxY, maxZ} each
+     * @param b     where the box lies in them
+     * @return half its shortest side
+     */
+    static double halfShortestSide(double[] boxes, int b) {
+        return Math.min(boxes[b + 3] - boxes[b], Math.min(boxes[b + 4] - boxes[b + 1], boxes[b + 5] - boxes[b + 2])) / 2;
+    }
+
     /** {@return the largest |coordinate| of a box} */
     private static double scale(double[] box) {
         double scale = 0;

@@ -45,9 +45,9 @@ public final class Query {
     /** The unbounded bodies the gather found, and how many. */
     final Geometry[] gatheredUnbounded;
     int unboundedCount;
-    /** The closed meshes ({@link ClosedMeshBlockers}) the gather found across some of the bundle's rays, and how many. */
-    final int[] blockerList = new int[ClosedMeshBlockers.MAX_BLOCKERS];
-    int blockerCount;
+    /** The cores of closed meshes ({@link ClosedMeshBlockers}) the gather found across some of the bundle's rays, and how many. */
+    final int[] coreList = new int[ClosedMeshBlockers.MAX_CORES];
+    int coreCount;
     /** Whether the last gather tried the closed meshes, and found one that blocks every ray of the bundle. */
     boolean blockersTried;
     boolean blocked;
