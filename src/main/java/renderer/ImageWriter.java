@@ -19,6 +19,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import javax.imageio.ImageIO;
 
 import primitives.Color;
+import primitives.Printable;
 
 import static primitives.Util.requireNonNull;
 
@@ -122,7 +123,7 @@ public class ImageWriter {
         int dot = fileName.lastIndexOf('.');
         String format = dot > 0 ? FORMATS.get(fileName.substring(dot).toLowerCase(Locale.ROOT)) : null;
         if (format == null)
-            throw new IllegalArgumentException("the image file " + file + " must end with one of "
+            throw new IllegalArgumentException("the image file " + Printable.of(file) + " must end with one of "
                     + String.join(", ", new TreeSet<>(FORMATS.keySet())));
         return format;
     }
@@ -264,7 +265,10 @@ public class ImageWriter {
                 + TEMPORARY_COUNT.incrementAndGet() + ".tmp");
     }
 
-    /** The failure to write an image, in the user's terms: what is in the way, not the exception's class. */
+    /**
+     * The failure to write an image, in the user's terms: what is in the way, not the exception's class;
+     * the file's name made {@link Printable printable}.
+     */
     private static UncheckedIOException cannotWrite(Path file, IOException e) {
         String reason;
         if (e instanceof AccessDeniedException)
@@ -277,6 +281,6 @@ public class ImageWriter {
             reason = f.getReason();
         else
             reason = e.getMessage();
-        return new UncheckedIOException(file + ": cannot write image: " + reason, e);
+        return new UncheckedIOException(Printable.of(file + ": cannot write image: " + reason), e);
     }
 }

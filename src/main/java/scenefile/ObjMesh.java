@@ -20,6 +20,7 @@ import de.javagl.obj.ObjReader;
 import geometries.Triangle;
 import geometries.TriangleMesh;
 import primitives.Point3D;
+import primitives.Printable;
 
 import static primitives.Util.requireNonNull;
 import static primitives.Util.requirePositive;
@@ -100,8 +101,8 @@ public final class ObjMesh {
      */
     public static TriangleMesh readMesh(Path file, double scale, Point3D position) {
         requireNonNull(file, "OBJ file");
-        requirePositive(scale, "scale of OBJ file " + file);
-        requireNonNull(position, "position of OBJ file " + file);
+        requirePositive(scale, "scale of OBJ file " + Printable.of(file));
+        requireNonNull(position, "position of OBJ file " + Printable.of(file));
 
         Obj obj = parse(file);
         Point3D[] vertices = vertices(obj, file, scale, position);
@@ -124,8 +125,8 @@ public final class ObjMesh {
             }
         }
         if (length == 0)
-            throw new IllegalArgumentException("OBJ file " + file + " has no triangles"
-                    + (faceCount == 0 ? "" : " (all its " + faceCount + " faces are degenerate)"));
+            throw failure("OBJ file " + file + " has no triangles"
+                    + (faceCount == 0 ? "" : " (all its " + faceCount + " faces are degenerate)"), null);
         return new TriangleMesh(coordinates(vertices), Arrays.copyOf(triangles, length));
     }
 
@@ -149,15 +150,27 @@ public final class ObjMesh {
         try {
             text = checkedText(file);
         } catch (NoSuchFileException e) {
-            throw new IllegalArgumentException("OBJ file not found: " + file, e);
+            throw failure("OBJ file not found: " + file, e);
         } catch (IOException e) {
-            throw new IllegalArgumentException("bad OBJ file " + file + ": " + reason(e), e);
+            throw failure("bad OBJ file " + file + ": " + reason(e), e);
         }
         try {
             return ObjReader.read(new StringReader(text));
         } catch (IOException | RuntimeException e) {
-            throw new IllegalArgumentException("bad OBJ file " + file + ": " + reason(e), e);
+            throw failure("bad OBJ file " + file + ": " + reason(e), e);
         }
+    }
+
+    /**
+     * The failure to read an OBJ file. Its message quotes the file's name and maybe its text, made
+     * {@link Printable printable}: a control character in them reaches no terminal.
+     *
+     * @param message what is wrong, naming the file
+     * @param cause   the exception that revealed it, or null
+     * @return the exception to throw
+     */
+    private static IllegalArgumentException failure(String message, Throwable cause) {
+        return new IllegalArgumentException(Printable.of(message), cause);
     }
 
     /** The library's complaint, on one line. */
@@ -213,12 +226,12 @@ public final class ObjMesh {
         for (int i = 0; i < vertices.length; ++i) {
             FloatTuple v = obj.getVertex(i);
             if (v.getDimensions() < 3)
-                throw new IllegalArgumentException("bad OBJ file " + file + ": vertex " + (i + 1) + " has "
-                        + v.getDimensions() + " coordinates instead of 3");
+                throw failure("bad OBJ file " + file + ": vertex " + (i + 1) + " has "
+                        + v.getDimensions() + " coordinates instead of 3", null);
             try {
                 vertices[i] = new Point3D(x0 + scale * v.getX(), y0 + scale * v.getY(), z0 + scale * v.getZ());
             } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException("bad OBJ file " + file + ": vertex " + (i + 1) + " " + v
+                throw failure("bad OBJ file " + file + ": vertex " + (i + 1) + " " + v
                         + " scaled by " + scale + " and moved to " + position + ": " + e.getMessage(), e);
             }
         }
@@ -295,7 +308,7 @@ public final class ObjMesh {
 
         /** A problem at the line being read. */
         IllegalArgumentException error(String problem) {
-            return new IllegalArgumentException("bad OBJ file " + file + ":" + lineNumber + ": " + problem);
+            return failure("bad OBJ file " + file + ":" + lineNumber + ": " + problem, null);
         }
     }
 }

@@ -34,6 +34,8 @@ import picocli.CommandLine;
 import scenefile.ObjMesh;
 import testutil.TestFiles;
 
+import static testutil.TestAssertions.assertPrintable;
+
 /**
  * Tests for {@link RenderCommand}: the command runs in this process, its out and err writers captured;
  * the pictures are small and go to {@code target/test-cli/} (never {@code images/}).
@@ -580,6 +582,40 @@ class RenderCommandTest {
         assertTrue(result.err().contains(message), tc + ": wrong message: " + result.err());
         assertTrue(result.err().contains("(see 'java -jar target/raytracer.jar --help')"),
                 tc + ": no --help hint: " + result.err());
+    }
+
+    /**
+     * Test method for input quoted in what the command prints: arguments, scene files and file names with
+     * control characters reach the terminal as visible escapes, never as commands.
+     */
+    @Test
+    void testControlCharactersQuoted() throws IOException {
+        Path folder = freshFolder("control");
+        String png = folder.resolve("out.png").toString();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an unknown option holding ESC ] 0 ; x BEL (an xterm title): "'--\x1B]0;x\x07'"
+        Result result = run(sceneFile.toString(), "-o", png, "--\u001b]0;x\u0007");
+        assertEquals(2, result.code(), "TC01: a bad argument should exit with 2");
+        assertOneLine(result, "TC01");
+        assertPrintable(result.err(), "'--\\x1B]0;x\\x07'", "TC01");
+        // TC02: an XML 1.1 scene file whose attribute holds ESC [ 2 J (clear the screen): "'\x1B[2J'"
+        Path scene = TestFiles.write(folder, "clear.xml", "<?xml version=\"1.1\"?>\n<scene><geometries><sphere"
+                + " center=\"0 0 0\" radius=\"&#x1B;[2J\"/></geometries></scene>");
+        assertBadScene("TC02", scene, ":2:", "got '\\x1B[2J'");
+        // TC03 (own): an image file whose name holds a C1 control (CSI): the report names it printably
+        result = run(sceneFile.toString(), "-o", folder.resolve("csi\u009b2J.png").toString(), "--width", "6");
+        assertEquals(0, result.code(), "TC03: the picture must be written: " + result.err());
+        assertPrintable(result.out(), "csi\\x9B2J.png", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a missing scene file whose name is a single ESC: "\x1B: no such scene file"
+        result = run(folder.resolve("\u001b").toString(), "-o", png);
+        assertEquals(2, result.code(), "TC11: a missing scene file should exit with 2");
+        assertPrintable(result.err(), "\\x1B: no such scene file", "TC11");
+        // TC12 (own): an image file name ending with a tab, of an unknown format: "out.gif\t"
+        result = run(sceneFile.toString(), "-o", folder.resolve("out.gif\t").toString());
+        assertEquals(2, result.code(), "TC12: a bad format should exit with 2");
+        assertPrintable(result.err(), "out.gif\\t must end with one of", "TC12");
     }
 
     /** Test method for the limits of the options: too large a grid or picture is one line, exit code 2. */

@@ -2,6 +2,7 @@ package renderer;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertPrintable;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -234,6 +235,10 @@ class ImageWriterTest {
                     "TC12: " + name + " must be refused");
         assertMessage(assertThrows(IllegalArgumentException.class, () -> ImageWriter.formatOf(null),
                 "TC12: a null file must be refused"), "image file", "TC12");
+        // TC13: a file name holding ESC [ 2 J, of an unknown format: named printably, "a\x1B[2J.gif"
+        assertPrintable(assertThrows(IllegalArgumentException.class,
+                () -> ImageWriter.formatOf(Path.of("a\u001b[2J.gif")), "TC13: .gif must be refused").getMessage(),
+                "a\\x1B[2J.gif must end with", "TC13");
     }
 
     /** Test method for {@link ImageWriter#copyTo(BufferedImage)}. */
@@ -273,6 +278,11 @@ class ImageWriterTest {
                     "TC01: an unwritable folder must fail");
             assertMessage(e, "cannot write image", "TC01");
             assertMessage(e, "blocked.png", "TC01");
+            // TC02: a name holding BEL, below the same file: the message names it printably, "bell\x07.png"
+            e = assertThrows(UncheckedIOException.class,
+                    () -> new ImageWriter("bell\u0007", 2, 2, blocker.resolve("sub")).writeToImage(),
+                    "TC02: an unwritable folder must fail");
+            assertPrintable(e.getMessage(), "bell\\x07.png: cannot write image", "TC02");
         } finally {
             deleteAll(blocker);
         }

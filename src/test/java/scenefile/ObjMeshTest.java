@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertPrintable;
 
 import java.io.IOException;
 import java.net.URISyntaxException;
@@ -316,6 +317,17 @@ class ObjMeshTest {
 
         // TC14: null position
         assertBad(() -> ObjMesh.read(cube, 1, null), cube, "TC14", "position", "must not be null");
+
+        // TC15: a coordinate holding ESC ] 0 ; x BEL (an xterm title) is quoted printably: "0\x1B]0;x\x07y"
+        Path title = TestFiles.write(folder, "title.obj", "v 0 0 0\u001b]0;x\u0007y\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        assertPrintable(assertThrows(IllegalArgumentException.class, () -> ObjMesh.read(title), "TC15: bad number")
+                .getMessage(), "0\\x1B]0;x\\x07y", "TC15");
+        // TC16 (own): a face holding a C1 control (CSI, U+009B), and a file whose name holds ESC
+        Path csi = TestFiles.write(folder, "csi\u001b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \u009b2J\n");
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class, () -> ObjMesh.read(csi),
+                "TC16: bad face");
+        assertPrintable(bad.getMessage(), "\\x9B2J", "TC16");
+        assertPrintable(bad.getMessage(), "csi\\x1B.obj", "TC16");
 
         // ===== Boundary Values Tests =====
         // TC21: an empty file

@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertColor;
+import static testutil.TestAssertions.assertPrintable;
 
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -292,6 +293,42 @@ class SceneParserTest {
         e = assertThrows(SceneFileException.class, () -> SceneParser.parse(zero), "TC13: width 0");
         assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'", e.getProblem(),
                 "TC13: wrong problem");
+    }
+
+    /**
+     * Test method for {@link SceneParser#parse(Path)}: text the messages quote from a file (and the file's
+     * name) reaches no terminal as commands: control characters are visible escapes.
+     */
+    @Test
+    void testControlCharactersQuoted() {
+        String sphere = "<scene><geometries><sphere center=\"0 0 0\" radius=\"%s\"/></geometries></scene>";
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an XML 1.1 attribute holding ESC ] 0 ; pwned BEL (sets an xterm's title): "got '\x1B]0;pwned\x07'"
+        Path title = file("title.xml", "<?xml version=\"1.1\"?>\n" + sphere.formatted("&#x1B;]0;pwned&#x7;"));
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(title),
+                "TC01: a bad number must be reported");
+        assertEquals("attribute 'radius' of <sphere> must be a number, got '\\x1B]0;pwned\\x07'", e.getProblem(),
+                "TC01: wrong problem");
+        assertPrintable(e.getMessage(), "\\x1B]0;pwned\\x07", "TC01");
+        // TC02: a C1 control, CSI (U+009B), clears the screen on some terminals: "\x9B2J"
+        Path csi = file("csi.xml", "<?xml version=\"1.1\"?>\n" + sphere.formatted("&#x9B;2J"));
+        assertPrintable(assertThrows(SceneFileException.class, () -> SceneParser.parse(csi), "TC02: a bad number")
+                .getMessage(), "got '\\x9B2J'", "TC02");
+        // TC03 (own): a file whose name holds ESC [ 2 J: the message names it printably
+        Path named = file("clear\u001b[2J.xml", "<scene>\n");
+        assertPrintable(assertThrows(SceneFileException.class, () -> SceneParser.parse(named), "TC03: broken XML")
+                .getMessage(), "clear\\x1B[2J.xml:", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the first control character, NUL, cannot be in XML at all, and BEL (U+0007), the last one a title
+        // needs, can only in XML 1.1: in 1.0 it is refused as the parser's message, which quotes no input
+        Path bell = file("bell.xml", sphere.formatted("&#x7;"));
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(bell), "TC11: BEL in XML 1.0");
+        assertPrintable(e.getMessage(), "invalid XML character", "TC11");
+        // TC12 (own): a tab and a line feed as character references stay on the one line: "\t" and "\n"
+        Path blanks = file("blanks.xml", sphere.formatted("x&#9;y&#10;z"));
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(blanks), "TC12: a bad number");
+        assertPrintable(e.getMessage(), "'x\\ty\\nz'", "TC12");
     }
 
     /**
