@@ -1,6 +1,7 @@
 package scenefile;
 
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.io.Reader;
 import java.io.StringReader;
 import java.nio.charset.StandardCharsets;
@@ -29,6 +30,10 @@ import static primitives.Util.requirePositive;
  * Reads a triangle mesh from a Wavefront OBJ file (with the de.javagl:obj library) into a flat
  * {@link TriangleMesh}: the file's vertices once each, its triangles as indices into them.
  * <p>
+ * The file is read as UTF-8, without a byte-order mark at its start (bytes that are not UTF-8, which
+ * can only stand in a comment or a name, are read as U+FFFD). It must be a regular file: a pipe or a
+ * device, which could keep the reading waiting forever, is refused.
+ * <p>
  * Only the vertices ({@code v}) and the faces ({@code f}) count; texture coordinates, normals,
  * groups and materials are ignored. Face indices may be absolute (1-based) or relative (negative,
  * counted back from the last vertex read). The library reads coordinates as {@code float}s.
@@ -43,6 +48,8 @@ public final class ObjMesh {
     public static final int MAX_LINE_LENGTH = 1 << 20;
     /** How many characters are read at a time. */
     private static final int BUFFER_SIZE = 1 << 16;
+    /** The byte-order mark, which some editors write at the start of a UTF-8 file. */
+    private static final char BYTE_ORDER_MARK = '\uFEFF';
 
     private ObjMesh() {
     }
@@ -146,6 +153,9 @@ public final class ObjMesh {
      * indices}; every failure becomes a one-line message naming the file.
      */
     private static Obj parse(Path file) {
+        if (Files.exists(file) && !Files.isRegularFile(file))
+            throw failure("bad OBJ file " + file + ": " + (Files.isDirectory(file) ? "it is a folder"
+                    : "it is not a regular file but a pipe or a device, which could keep the reading waiting"), null);
         String text;
         try {
             text = checkedText(file);
@@ -189,18 +199,22 @@ public final class ObjMesh {
     }
 
     /**
-     * The file's text, read with lines of at most {@link #MAX_LINE_LENGTH} characters (so a file
-     * without line breaks, such as /dev/zero, is refused, not read into memory) and every face index
-     * checked.
+     * The file's text, read as UTF-8 without the byte-order mark, with lines of at most
+     * {@link #MAX_LINE_LENGTH} characters (so a file without line breaks is refused, not read into
+     * memory) and every face index checked.
      */
     private static String checkedText(Path file) throws IOException {
         StringBuilder text = new StringBuilder();
         StringBuilder line = new StringBuilder();
         FaceIndexChecker checker = new FaceIndexChecker(file);
         char[] buffer = new char[BUFFER_SIZE];
-        try (Reader in = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
-            for (int n = in.read(buffer); n >= 0; n = in.read(buffer))
-                for (int k = 0; k < n; ++k) {
+        // a reader of a charset replaces bytes it cannot decode with U+FFFD
+        try (Reader in = new InputStreamReader(Files.newInputStream(file), StandardCharsets.UTF_8)) {
+            boolean first = true; // the first characters read, which may start with a byte-order mark
+            for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
+                int start = first && buffer[0] == BYTE_ORDER_MARK ? 1 : 0;
+                first = false;
+                for (int k = start; k < n; ++k) {
                     if (buffer[k] == '\n') {
                         checker.accept(line);
                         text.append(line).append('\n');
@@ -211,6 +225,7 @@ public final class ObjMesh {
                     else
                         line.append(buffer[k]);
                 }
+            }
         }
         checker.accept(line);
         checker.finish();
