@@ -777,8 +777,8 @@ class RenderCommandTest {
     }
 
     /**
-     * Test method for {@link Main}'s process: not enough memory for the picture, a German locale and a
-     * kill while rendering, each in a JVM of its own.
+     * Test method for {@link Main}'s process: not enough memory for the picture, a German locale, a scene
+     * from the standard input and a kill while rendering, each in a JVM of its own.
      */
     @Test
     void testSeparateProcess() throws IOException, InterruptedException {
@@ -793,6 +793,15 @@ class RenderCommandTest {
         process = java(folder, List.of("-Duser.language=de", "-Duser.country=DE"), german.toString(), "-o",
                 folder.resolve("german.png").toString());
         assertProcessFailure("TC02", process, "The end-tag for element type \"scene\" must end with a '>' delimiter");
+        // TC03: the scene read from /dev/stdin, a pipe (read once: a second reading found it empty before)
+        Path piped = folder.resolve("piped.png");
+        process = java(folder, List.of(), "/dev/stdin", "-o", piped.toString(), "--width", "12", "-q");
+        try (var stdin = process.getOutputStream()) {
+            stdin.write(Files.readAllBytes(sceneFile));
+        }
+        String err = new String(process.getErrorStream().readAllBytes());
+        assertEquals(0, process.waitFor(), "TC03: a scene from a pipe must render: " + err);
+        assertEquals(12, ImageIO.read(piped.toFile()).getWidth(), "TC03: the picture must be written");
 
         // ===== Boundary Values Tests =====
         // TC11: a render killed (SIGKILL) while running leaves the old picture whole

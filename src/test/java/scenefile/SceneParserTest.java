@@ -296,6 +296,48 @@ class SceneParserTest {
     }
 
     /**
+     * Test method for {@link SceneParser#parse(Path)}: the file is read once, so a named pipe (as a shell's
+     * {@code <(cat scene.xml)} or {@code /dev/stdin} gives) is read like a file.
+     */
+    @Test
+    void testReadOnce() {
+        String tiny = String.join("\n", TINY);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the tiny scene through a pipe: the same tree as from a file, its 3 bodies and 1 light
+        Path pipe = TestFiles.fifo(FOLDER, "pipe.xml");
+        TestFiles.feed(pipe, tiny);
+        SceneElement root = SceneParser.parse(pipe);
+        assertEquals("tiny", root.text("name"), "TC01: wrong scene name");
+        assertEquals(3, root.child("geometries").children().size(), "TC01: the bodies must be read");
+        assertEquals(1, root.child("lights").children().size(), "TC01: the light must be read");
+        // TC02: a scene the schema refuses, through a pipe: the schema's message with its place, not an end of file
+        Path refused = TestFiles.fifo(FOLDER, "refused.xml");
+        TestFiles.feed(refused, "<scene>\n<image width=\"0\"/>\n</scene>\n");
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(refused),
+                "TC02: width 0 must be refused");
+        assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'", e.getProblem(),
+                "TC02: wrong problem");
+        assertEquals(2, e.getLine(), "TC02: wrong line");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a pipe cut inside the XML declaration: the place is the end of what it gave (line 1, column 6)
+        Path cut = TestFiles.fifo(FOLDER, "cut.xml");
+        TestFiles.feed(cut, "<?xml");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(cut), "TC11: a cut pipe");
+        assertEquals(cut + ":1:6: Premature end of file.", e.getMessage(), "TC11: wrong message");
+        // TC12 (own): an empty pipe: a premature end at line 1, column 1
+        Path empty = TestFiles.fifo(FOLDER, "empty.xml");
+        TestFiles.feed(empty, "");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(empty), "TC12: an empty pipe");
+        assertEquals(empty + ":1:1: Premature end of file.", e.getMessage(), "TC12: wrong message");
+        // TC13 (own): the last line of a file cut after two lines: the place is line 3, column 1
+        Path twoLines = file("twoLines.xml", "<scene>\n<geometries>\n");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(twoLines), "TC13: a cut file");
+        assertEquals(3, e.getLine(), "TC13: wrong line");
+        assertEquals(1, e.getColumn(), "TC13: wrong column");
+    }
+
+    /**
      * Test method for {@link SceneParser#parse(Path)}: text the messages quote from a file (and the file's
      * name) reaches no terminal as commands: control characters are visible escapes.
      */

@@ -67,8 +67,10 @@ public final class TestFiles {
     }
 
     /**
-     * Writes a text into a named pipe from a thread of its own, a daemon: opening the pipe waits for a
-     * reader (a test whose code must not read the pipe reads it itself at the end, which lets the thread end).
+     * Writes a text into a named pipe for its first reader, from a thread of its own (a daemon), then
+     * opens it once more and writes nothing: code that opens the pipe a second time (once the first reader
+     * has closed it) finds it empty and fails, rather than waiting forever for a writer. Opening the pipe
+     * waits for a reader: a test whose code must not read the pipe reads it itself at the end.
      *
      * @param fifo the pipe
      * @param text the text, in UTF-8
@@ -77,8 +79,9 @@ public final class TestFiles {
         Thread writer = new Thread(() -> {
             try {
                 Files.writeString(fifo, text);
+                Files.newOutputStream(fifo).close();
             } catch (IOException e) {
-                // the reader stopped reading early: what it read, its test checks
+                // the reader stopped early: what it read, its test checks
             }
         }, "fifo-writer");
         writer.setDaemon(true);
