@@ -26,6 +26,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import primitives.FileNames;
 import primitives.Printable;
 import renderer.Camera;
 import renderer.ImageWriter;
@@ -175,9 +176,19 @@ public class RenderCommand implements Callable<Integer> {
      */
     public static CommandLine newCommandLine(boolean terminal) {
         return new CommandLine(new RenderCommand(terminal))
+                .registerConverter(Path.class, RenderCommand::path)
                 .setParameterExceptionHandler(RenderCommand::badArguments)
                 .setExecutionExceptionHandler((e, commandLine, parseResult) ->
                         printFailure(commandLine, ((RenderCommand) commandLine.getCommand()).failure(e)));
+    }
+
+    /** The path an argument names; one that cannot be a path (in the C locale, say) is a bad argument saying why. */
+    private static Path path(String name) {
+        try {
+            return FileNames.toPath(name);
+        } catch (IllegalArgumentException e) {
+            throw new CommandLine.TypeConversionException(e.getMessage());
+        }
     }
 
     /** Prints a bad argument's message, with picocli's suggestions and a hint, on one line. */

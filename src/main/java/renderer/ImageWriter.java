@@ -19,6 +19,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import javax.imageio.ImageIO;
 
 import primitives.Color;
+import primitives.FileNames;
 import primitives.Printable;
 
 import static primitives.Util.requireNonNull;
@@ -77,7 +78,8 @@ public class ImageWriter {
      *                                  positive or has more than {@link #MAX_PIXELS} pixels
      */
     public ImageWriter(String imageName, int nX, int nY, Path folder) {
-        this(requireNonNull(folder, "image folder").resolve(requireName(imageName) + EXTENSION), nX, nY);
+        this(requireNonNull(folder, "image folder").resolve(FileNames.toPath(requireName(imageName) + EXTENSION)),
+                nX, nY);
     }
 
     /**

@@ -18,6 +18,7 @@ import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
+import primitives.FileNames;
 import primitives.Material;
 import primitives.Point3D;
 import primitives.Ray;
@@ -179,8 +180,8 @@ public final class SceneLoader {
     }
 
     private static TriangleMesh mesh(SceneElement mesh, Path folder) {
-        TriangleMesh triangles = ObjMesh.readMesh(folder.resolve(mesh.text("file")), mesh.number("scale"),
-                mesh.point("position"));
+        Path file = folder.resolve(FileNames.toPath(mesh.text("file")));
+        TriangleMesh triangles = ObjMesh.readMesh(file, mesh.number("scale"), mesh.point("position"));
         Point3D farthest = Point3D.ZERO;
         for (int v = 0; v < triangles.getVerticesCount(); ++v) {
             Point3D vertex = triangles.getVertex(v);

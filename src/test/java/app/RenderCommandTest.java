@@ -13,11 +13,13 @@ import java.io.StringWriter;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Random;
 import java.util.regex.MatchResult;
 import java.util.regex.Matcher;
@@ -802,6 +804,17 @@ class RenderCommandTest {
         String err = new String(process.getErrorStream().readAllBytes());
         assertEquals(0, process.waitFor(), "TC03: a scene from a pipe must render: " + err);
         assertEquals(12, ImageIO.read(piped.toFile()).getWidth(), "TC03: the picture must be written");
+        // TC04: in the C locale, a scene file named with a non-ASCII letter: one line saying what to set
+        Map<String, String> cLocale = Map.of("LC_ALL", "C", "LANG", "C");
+        Path accented = Files.copy(sceneFile, folder.resolve("sc\u00e8ne.xml"), StandardCopyOption.REPLACE_EXISTING);
+        process = java(folder, cLocale, List.of(), accented.toString(), "-o", folder.resolve("c.png").toString());
+        String advice = "run with a UTF-8 locale, e.g. LC_ALL=C.UTF-8";
+        assertProcessFailure("TC04", process, "Invalid value for positional parameter at index 0 (SCENE.xml): the file"
+                + " name '" + folder + "/sc", advice);
+        // TC05 (own): ... and a scene file naming a mesh so: the mesh's element, and the locale to set
+        Path meshScene = TestFiles.write(folder, "meshC.xml", geometries("<mesh file=\"mod\u00e8le.obj\"/>"));
+        process = java(folder, cLocale, List.of(), meshScene.toString(), "-o", folder.resolve("c.png").toString());
+        assertProcessFailure("TC05", process, meshScene + ":3:", "<mesh>: the file name 'mod", advice);
 
         // ===== Boundary Values Tests =====
         // TC11: a render killed (SIGKILL) while running leaves the old picture whole
@@ -817,22 +830,34 @@ class RenderCommandTest {
 
     /** Starts {@link Main} in a JVM of its own, with these JVM options and arguments; its err is read later. */
     private static Process java(Path folder, List<String> options, String... args) throws IOException {
+        return java(folder, Map.of(), options, args);
+    }
+
+    /**
+     * Starts {@link Main} in a JVM of its own, with these environment variables (beside this JVM's), JVM
+     * options and arguments; its err is read later.
+     */
+    private static Process java(Path folder, Map<String, String> environment, List<String> options, String... args)
+            throws IOException {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.addAll(options);
         command.addAll(List.of("-cp", System.getProperty("java.class.path"), Main.class.getName()));
         command.addAll(List.of(args));
-        return new ProcessBuilder(command).redirectOutput(folder.resolve("out.txt").toFile()).start();
+        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(folder.resolve("out.txt").toFile());
+        builder.environment().putAll(environment);
+        return builder.start();
     }
 
-    private static void assertProcessFailure(String tc, Process process, String message) throws IOException,
+    private static void assertProcessFailure(String tc, Process process, String... messages) throws IOException,
             InterruptedException {
         String err = new String(process.getErrorStream().readAllBytes());
         assertEquals(2, process.waitFor(), tc + ": the process should exit with 2: " + err);
         Result result = new Result(2, "", err);
         assertEquals(1, result.errLines().size(), tc + ": not one line: " + err);
         assertNoStackTrace(result, tc);
-        assertTrue(err.contains(message), tc + ": wrong message: " + err);
+        for (String message : messages)
+            assertTrue(err.contains(message), tc + ": wrong message, without \"" + message + "\": " + err);
     }
 
     /**

@@ -71,6 +71,10 @@ class ImageWriterTest {
         e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("bad", 10, 10, null),
                 "TC05: null folder must be rejected");
         assertMessage(e, "folder", "TC05");
+        // TC06: a name no path can hold (NUL): refused, naming it printably and why
+        e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("a\0b", 2, 2, TEST_FOLDER),
+                "TC06: a NUL in the name must be rejected");
+        assertPrintable(e.getMessage(), "the file name 'a\\x00b.png' cannot be a path", "TC06");
 
         // ===== Boundary Values Tests =====
         // TC10: size 0 is rejected, the message names the "image size"
