@@ -60,8 +60,9 @@ public class ImageWriter {
      * @param imageName the file name, without extension
      * @param nX        the number of columns, positive
      * @param nY        the number of rows, positive
-     * @throws IllegalArgumentException when the name is blank or null, or the size is not positive or has
-     *                                  more than {@link #MAX_PIXELS} pixels
+     * @throws IllegalArgumentException when the name is blank or null, cannot be a path or leads out of
+     *                                  {@code images/} (an absolute name, or {@code ..} above it), or the
+     *                                  size is not positive or has more than {@link #MAX_PIXELS} pixels
      */
     public ImageWriter(String imageName, int nX, int nY) {
         this(imageName, nX, nY, DEFAULT_FOLDER);
@@ -70,16 +71,17 @@ public class ImageWriter {
     /**
      * Creates an image that will be written to {@code <folder>/<imageName>.png}.
      *
-     * @param imageName the file name, without extension
+     * @param imageName the file name, without extension; it may lead into a folder inside the folder
+     *                  ({@code sub/picture}), never out of it
      * @param nX        the number of columns, positive
      * @param nY        the number of rows, positive
      * @param folder    the folder to write to (created when missing)
-     * @throws IllegalArgumentException when the name is blank, an argument is null, or the size is not
-     *                                  positive or has more than {@link #MAX_PIXELS} pixels
+     * @throws IllegalArgumentException when the name is blank, cannot be a path or leads out of the folder
+     *                                  (an absolute name, or {@code ..} above it), an argument is null, or
+     *                                  the size is not positive or has more than {@link #MAX_PIXELS} pixels
      */
     public ImageWriter(String imageName, int nX, int nY, Path folder) {
-        this(requireNonNull(folder, "image folder").resolve(FileNames.toPath(requireName(imageName) + EXTENSION)),
-                nX, nY);
+        this(fileIn(requireNonNull(folder, "image folder"), requireName(imageName)), nX, nY);
     }
 
     /**
@@ -104,6 +106,19 @@ public class ImageWriter {
         this.nY = nY;
         this.image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
         this.pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+    }
+
+    /**
+     * The file of an image's name in its folder: {@code <folder>/<imageName>.png}. A name may lead into a
+     * folder inside (sub/picture), never out of it: an absolute name, or one whose ".." climbs above the
+     * folder, is refused.
+     */
+    private static Path fileIn(Path folder, String imageName) {
+        Path file = folder.resolve(FileNames.toPath(imageName + EXTENSION));
+        if (!file.toAbsolutePath().normalize().startsWith(folder.toAbsolutePath().normalize()))
+            throw new IllegalArgumentException("image name '" + Printable.of(imageName) + "' leads out of its folder "
+                    + Printable.of(folder) + ": give a name inside it, without an absolute path or '..' above it");
+        return file;
     }
 
     private static String requireName(String imageName) {
@@ -220,9 +235,11 @@ public class ImageWriter {
      * missing, and checks that a file can be made there and that the path is not a folder.
      *
      * @param file the image file
-     * @throws UncheckedIOException when no image can be written there
+     * @throws UncheckedIOException     when no image can be written there
+     * @throws IllegalArgumentException when the file is null
      */
     public static void checkOutput(Path file) {
+        requireNonNull(file, "image file");
         try {
             prepareFolder(file);
             Files.delete(Files.createFile(temporaryPath(file)));

@@ -108,6 +108,31 @@ class ImageWriterTest {
         Path folder = TEST_FOLDER.resolve("nested").resolve("deeper");
         assertEquals(folder.resolve("scene A.png"), new ImageWriter("scene A", 10, 10, folder).getPath(),
                 "TC02: wrong path in a given folder");
+        // TC03: a name with ".." above the folder is refused, naming it and the folder: nothing is written outside
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new ImageWriter("../escaped", 10, 10, folder), "TC03: ../escaped must be refused");
+        assertMessage(e, "image name '../escaped' leads out of its folder " + folder, "TC03");
+        // TC04: an absolute name is refused, in the default folder too
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> new ImageWriter("/tmp/escaped", 10, 10),
+                "TC04: /tmp/escaped must be refused"), "leads out of its folder images", "TC04");
+        // TC05 (own): a name leading into a folder inside is kept: <folder>/sub/picture.png
+        assertEquals(folder.resolve("sub").resolve("picture.png"), new ImageWriter("sub/picture", 10, 10, folder)
+                .getPath(), "TC05: a folder inside must be allowed");
+
+        // ===== Boundary Values Tests =====
+        // TC11: ".." that climbs back into the folder stays inside: <folder>/sub/../picture.png
+        assertEquals(folder.resolve("sub/../picture.png"), new ImageWriter("sub/../picture", 10, 10, folder).getPath(),
+                "TC11: a name that stays inside must be kept");
+        // TC12: one level too far, sub/../../picture, is refused
+        assertThrows(IllegalArgumentException.class, () -> new ImageWriter("sub/../../picture", 10, 10, folder),
+                "TC12: sub/../../picture must be refused");
+        // TC13: the name ".." alone is the file "...png" in the folder, not its parent
+        assertEquals(folder.resolve("...png"), new ImageWriter("..", 10, 10, folder).getPath(),
+                "TC13: '..' must be the file ...png");
+        // TC14 (own): the current folder, given as "", holds a plain name but not "../x"
+        assertEquals(Path.of("x.png"), new ImageWriter("x", 1, 1, Path.of("")).getPath(), "TC14: wrong path in ''");
+        assertThrows(IllegalArgumentException.class, () -> new ImageWriter("../x", 1, 1, Path.of("")),
+                "TC14: ../x must be refused in ''");
     }
 
     /** Test method for {@link renderer.ImageWriter#writePixel(int, int, primitives.Color)} and {@link renderer.ImageWriter#getPixel(int, int)}. */
@@ -353,6 +378,9 @@ class ImageWriterTest {
                     () -> new ImageWriter("picture", 2, 2, blocker.resolve("sub")).checkOutput(),
                     "TC04: a folder below a file must be rejected");
             assertMessage(e, blocker.resolve("sub").resolve("picture.png") + ": cannot write image", "TC04");
+            // TC05: a null path is refused as such, not with a NullPointerException
+            assertMessage(assertThrows(IllegalArgumentException.class, () -> ImageWriter.checkOutput(null),
+                    "TC05: a null path must be refused"), "image file must not be null", "TC05");
         } finally {
             deleteAll(blocker, folder.resolve("sub"), folder);
         }
