@@ -14,6 +14,7 @@ import primitives.Vector;
 import scene.Scene;
 
 import static primitives.Util.alignZero;
+import static primitives.Util.requireNonNull;
 
 /**
  * The course's ray tracer: Phong local lighting with shadows that let light through transparent
@@ -43,9 +44,12 @@ public class RayTracerBasic extends RayTracerBase {
     /**
      * {@inheritDoc} The calling thread's state is looked up once here and passed down to every
      * intersection, light and spread ray of the path.
+     *
+     * @throws IllegalArgumentException {@inheritDoc}
      */
     @Override
     public Color traceRay(Ray ray) {
+        requireNonNull(ray, "ray to trace");
         ThreadState state = threadState();
         GeoPoint closestPoint = findClosestIntersection(ray, state);
         return closestPoint == null ? scene.background : calcColor(closestPoint, ray, state);
@@ -63,13 +67,17 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     /**
-     * Takes the bounding volume hierarchy over the scene's bodies, built on up to a number of threads
+     * Checks the scene ({@link Scene#requireComplete()}: no field of it null, no null light), then takes
+     * the bounding volume hierarchy over the scene's bodies, built on up to a number of threads
      * unless it was built over them as they are now (the scene's composite keeps it, see
      * {@link geometries.Geometries#hierarchy}, so a new tracer over an unchanged scene builds nothing),
      * and has it read the bodies' materials again ({@link BoundingVolumeHierarchy#readMaterials}).
+     *
+     * @throws IllegalArgumentException when a field of the scene is null or it holds a null light
      */
     @Override
     protected synchronized void prepare(int threads) {
+        scene.requireComplete();
         BoundingVolumeHierarchy bvh = accelerator;
         if (bvh == null || !bvh.isBuiltFrom(scene.geometries))
             accelerator = bruteForce ? BoundingVolumeHierarchy.scan(scene.geometries)

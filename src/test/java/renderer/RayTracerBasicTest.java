@@ -72,6 +72,9 @@ class RayTracerBasicTest {
         // TC02: a ray hitting the floor sees emission + ambient = (1+50, 2+25, 3+10)
         assertColor(new Color(51, 27, 13), tracer.traceRay(RAY_DOWN),
                 "TC02: with no lights the colour is emission plus ambient");
+        // TC03: a null ray is refused, naming it (not a NullPointerException)
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> tracer.traceRay(null),
+                "TC03: a null ray must be refused"), "ray to trace must not be null", "TC03");
     }
 
     /**
@@ -125,6 +128,14 @@ class RayTracerBasicTest {
         next.prepare(2);
         assertSame(built, next.accelerator(), "TC12: a new tracer over an unchanged scene must not build again");
         assertColor(red, next.traceRay(RAY_DOWN), "TC12: the new tracer sees the sphere");
+        // TC13: a null among the lights, put in through the public field: refused by the preparation (before
+        // any pixel of a render), naming the index
+        scene.lights = Arrays.asList(new DirectionalLight(red, DOWN), null);
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> next.prepare(2),
+                "TC13: a null light must be refused"), "scene.lights must not hold null (at index 1)", "TC13");
+        // TC14 (own): ... and by the first ray of a tracer no render prepared
+        assertThrows(IllegalArgumentException.class, () -> new RayTracerBasic(scene).traceRay(RAY_DOWN),
+                "TC14: a null light must be refused at the first ray");
     }
 
     /** Test method for {@link RayTracerBasic#traceRay(Ray)}: the Phong diffuse and specular terms. */

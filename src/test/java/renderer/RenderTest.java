@@ -333,6 +333,19 @@ class RenderTest {
         assertEquals(java.awt.Color.BLACK, writer.getPixel(7, 7), "TC02: off the grid the pixel must not change");
         render.writeToImage();
         assertTrue(Files.exists(FOLDER.resolve("grid.png")), "TC02: the picture must be written");
+        // TC03: a null among the scene's lights (put in through the public field) stops the render before its
+        // first tile: an IllegalArgumentException naming it, no tile reported, no pixel rendered
+        Scene unlit = floorScene("null light");
+        unlit.lights = java.util.Arrays.asList(new DirectionalLight(new Color(100, 100, 100), new Vector(0, 0, -1)),
+                null);
+        AtomicInteger tiles = new AtomicInteger();
+        ImageWriter blank = new ImageWriter("nullLight", SIZE, SIZE, FOLDER);
+        Render refused = new Render().setImageWriter(blank).setCamera(topCamera()).setRayTracer(new RayTracerBasic(unlit))
+                .setProgressListener(done -> tiles.incrementAndGet());
+        assertMessage(assertThrows(IllegalArgumentException.class, refused::renderImage,
+                "TC03: a null light must stop the render"), "scene.lights must not hold null (at index 1)", "TC03");
+        assertEquals(0, tiles.get(), "TC03: no tile may be rendered");
+        assertEquals(java.awt.Color.BLACK, blank.getPixel(SIZE / 2, SIZE / 2), "TC03: no pixel may be rendered");
 
         // ===== Boundary Values Tests =====
         // TC11: a grid interval of 0 is rejected
