@@ -19,6 +19,14 @@ import static primitives.Util.requireNonNull;
 /**
  * The course's ray tracer: Phong local lighting with shadows that let light through transparent
  * bodies, plus reflection and straight-through refraction traced recursively.
+ * <p>
+ * Points that coincide are legal scenes and render. A point where a light sits (a point light on a
+ * plane or a sphere, {@link LightSource#isAt}) receives nothing from that light: the light has no
+ * direction there, and the surface around the point sees it edge-on, so it receives nothing from it
+ * either; the other lights shine on it as anywhere. A hit where the body has no normal (it rounds onto
+ * the centre of a sphere, or the axis of a tube or cylinder, too thin for the precision of its
+ * coordinates) is shaded as a surface facing the ray: the normal is the ray's direction reversed, which
+ * is a sphere's own normal at the nearer point of a ray through its centre.
  */
 public class RayTracerBasic extends RayTracerBase {
     /** The deepest recursion of reflected and refracted rays. */
@@ -114,7 +122,7 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     private Color calcColor(GeoPoint geoPoint, Ray ray, int level, double k, ThreadState state) {
-        Vector n = geoPoint.getNormal();
+        Vector n = normal(geoPoint, ray);
         Color color = geoPoint.geometry.getEmission().add(calcLocalEffects(geoPoint, ray.getDir(), n, k, state));
         if (level == 1)
             return color;
@@ -124,7 +132,20 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     /**
-     * Diffuse and specular light from every light source that reaches the point. The sum is kept in
+     * The unit normal at a hit; where the body has none (the hit rounds onto a sphere's centre or a tube's
+     * axis, so the body refuses the point), the ray's direction reversed: the surface faces the ray.
+     */
+    private static Vector normal(GeoPoint geoPoint, Ray ray) {
+        try {
+            return geoPoint.getNormal();
+        } catch (IllegalArgumentException e) {
+            return ray.getDir().scale(-1);
+        }
+    }
+
+    /**
+     * Diffuse and specular light from every light source that reaches the point, but for a light that sits
+     * at the point. The sum is kept in
      * raw components, with the same arithmetic as adding the lights' {@link Color}s: each light's
      * intensity scaled by its transparency, then by the diffuse and the specular factor, both added.
      */
@@ -137,6 +158,8 @@ public class RayTracerBasic extends RayTracerBase {
         double g = 0;
         double b = 0;
         for (LightSource light : scene.lights) {
+            if (light.isAt(geoPoint.point))
+                continue; // no direction: the point receives nothing from this light (see the class comment)
             Vector l = light.getL(geoPoint.point);
             double nl = alignZero(n.dotProduct(l));
             if (nl * nv > 0) { // the light and the viewer are on the same side of the surface

@@ -303,6 +303,44 @@ class RenderTest {
                 "TC11: a negative thread count must be rejected");
     }
 
+    /**
+     * Test method for {@link Render#renderImage()}: points that coincide (a light on the surface, a hit on
+     * a sphere's centre through a large aperture) render to the end, as {@link RayTracerBasic} says.
+     */
+    @Test
+    void testCoincidingPointsRender() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a point light on the floor, where the ray of pixel (50, 50) meets it, (1, -1, 0): the picture is
+        // rendered, and that pixel gets nothing from the light, the ambient light's (50, 50, 50) alone; so does
+        // the floor around it, which sees the light edge-on
+        Scene scene = floorScene("light on the floor").setAmbientLight(new AmbientLight(new Color(50, 50, 50), 1));
+        scene.lights.add(new PointLight(new Color(500, 500, 500), new Point3D(1, -1, 0)));
+        Render render = render("lightOnFloor", scene);
+        assertEquals(new java.awt.Color(50, 50, 50), pixel(render, 50, 50), "TC01: the light on the point adds nothing");
+        assertEquals(new java.awt.Color(50, 50, 50), pixel(render, 60, 50), "TC01: the light edge-on adds nothing");
+        // TC02: a sphere of radius 5e-5, 1e12 away, seen through an aperture of 1000 focused on its centre: the
+        // hits round onto the centre; the picture is rendered, the sphere lit as facing the rays:
+        // emission (10, 20, 30) + kD 0.8 · (255, 255, 255) = (214, 224, 234)
+        Scene tiny = new Scene("tiny sphere");
+        tiny.geometries.add(new Sphere(new Point3D(0, 0, -1e12), 5e-5).setEmission(new Color(10, 20, 30))
+                .setMaterial(new Material().setKd(0.8)));
+        tiny.lights.add(new DirectionalLight(new Color(255, 255, 255), new Vector(0, 0, -1)));
+        Camera lens = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(1, 1)
+                .setVpDistance(1).setFocalDistance(1e12).setApertureSize(1000).setSqrtApertureRays(3);
+        Render aperture = new Render().setImageWriter(new ImageWriter("tinySphere", 3, 3, FOLDER)).setCamera(lens)
+                .setRayTracer(new RayTracerBasic(tiny)).setMultithreading(2);
+        aperture.renderImage();
+        assertEquals(new java.awt.Color(214, 224, 234), pixel(aperture, 1, 1), "TC02: wrong colour of the centre");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a spot light on the floor at that point with soft shadows, 5 x 5 beams: rendered, the pixel as in TC01
+        Scene spot = floorScene("spot on the floor").setAmbientLight(new AmbientLight(new Color(50, 50, 50), 1));
+        spot.lights.add(new SpotLight(new Color(500, 500, 500), new Point3D(1, -1, 0), new Vector(0, 0, 1))
+                .setEdgesSize(20));
+        Render soft = render("spotOnFloor", SIZE, new RayTracerBasic(spot).setSoftShadows(true).setSqrtBeamNum(5), 1, 2);
+        assertEquals(new java.awt.Color(50, 50, 50), pixel(soft, 50, 50), "TC11: the spot on the point adds nothing");
+    }
+
     /** Test method for {@link Render#renderImage()}, {@link Render#printGrid} and {@link Render#writeToImage()}. */
     @Test
     void testMissingPartsAndGrid() {
