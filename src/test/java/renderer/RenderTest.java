@@ -15,6 +15,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.MissingResourceException;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.UnaryOperator;
 
@@ -489,8 +490,8 @@ class RenderTest {
 
     /** Asserts that two renders wrote the same picture, pixel for pixel. */
     private static void assertSamePicture(Render expected, Render actual, String message) {
-        for (int y = 0; y < AA_SIZE; ++y)
-            for (int x = 0; x < AA_SIZE; ++x)
+        for (int y = 0; y < expected.getImageWriter().getNy(); ++y)
+            for (int x = 0; x < expected.getImageWriter().getNx(); ++x)
                 assertEquals(pixel(expected, x, y), pixel(actual, x, y),
                         message + " at pixel (" + x + ", " + y + ")");
     }
@@ -749,6 +750,64 @@ class RenderTest {
                 .setRayTracer(new RayTracerBasic(scene)).setMultithreading(2).setProgressListener(one::add)
                 .renderImage();
         assertEquals(java.util.List.of(1L), one, "TC13: a 1 × 1 picture must report 1 pixel once");
+    }
+
+    /**
+     * Test method for {@link Render#renderImage()}: {@link Thread#interrupt()} of the rendering thread stops
+     * the render at once and says so, the flag kept; a picture that was complete is not reported interrupted.
+     */
+    @Test
+    void testInterruption() {
+        Thread caller = Thread.currentThread();
+        Scene scene = floorScene("interrupted");
+        scene.lights.add(new PointLight(new Color(300, 300, 300), new Point3D(0, 0, 100)));
+        // 100 × 100 pixels: 7 × 7 tiles of 16 × 16 (the last row and column 4 wide), 10,000 pixels
+        AtomicInteger tiles = new AtomicInteger();
+        try {
+            // ===== Equivalence Partitions Tests =====
+            // TC01: interrupted after the first tile, on 2 threads: a CancellationException, a tile or two more at
+            // the most (each thread ends its own), far from the 49, the flag still set
+            Render render = new Render().setImageWriter(new ImageWriter("interrupted", SIZE, SIZE, FOLDER))
+                    .setCamera(topCamera()).setRayTracer(new RayTracerBasic(scene)).setMultithreading(2)
+                    .setProgressListener(done -> {
+                        if (tiles.incrementAndGet() == 1)
+                            caller.interrupt();
+                    });
+            CancellationException e = assertThrows(CancellationException.class, render::renderImage,
+                    "TC01: the interrupted render must say so");
+            assertMessage(e, "interrupted: the render threads stopped after", "TC01");
+            assertTrue(tiles.get() <= 3, "TC01: the render must stop at once, " + tiles.get() + " tiles were done");
+            assertTrue(Thread.interrupted(), "TC01: the interrupt flag must stay set");
+            // TC02: the same render again, not interrupted: complete (every tile), the floor lit
+            tiles.set(0);
+            render.setProgressListener(done -> tiles.incrementAndGet()).renderImage();
+            assertEquals(49, tiles.get(), "TC02: every tile must be rendered");
+            assertTrue(brightness(render, 50, 50) > 100, "TC02: the floor must be lit");
+
+            // ===== Boundary Values Tests =====
+            // TC11: interrupted by the last tile: the picture is complete, so it is not reported interrupted
+            tiles.set(0);
+            Render last = new Render().setImageWriter(new ImageWriter("interruptedLast", SIZE, SIZE, FOLDER))
+                    .setCamera(topCamera()).setRayTracer(new RayTracerBasic(scene)).setMultithreading(2)
+                    .setProgressListener(done -> {
+                        if (done == (long) SIZE * SIZE)
+                            caller.interrupt();
+                    });
+            last.renderImage();
+            assertTrue(Thread.interrupted(), "TC11: the interrupt flag must stay set for the caller to see");
+            assertSamePicture(render, last, "TC11: the complete picture must be the whole one");
+            // TC12 (own): interrupted before the call, on 1 thread: no tile is rendered
+            tiles.set(0);
+            caller.interrupt();
+            Render before = new Render().setImageWriter(new ImageWriter("interruptedBefore", SIZE, SIZE, FOLDER))
+                    .setCamera(topCamera()).setRayTracer(new RayTracerBasic(scene)).setMultithreading(1)
+                    .setProgressListener(done -> tiles.incrementAndGet());
+            assertMessage(assertThrows(CancellationException.class, before::renderImage,
+                    "TC12: the interrupted render must say so"), "after 0 of 49 tasks", "TC12");
+            assertEquals(0, tiles.get(), "TC12: no tile may be rendered");
+        } finally {
+            Thread.interrupted(); // the test thread goes on uninterrupted whatever failed
+        }
     }
 
     /** Test method for {@link Render#getRayTracer()}. */
