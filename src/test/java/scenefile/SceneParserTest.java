@@ -29,6 +29,8 @@ import primitives.Point3D;
  */
 class SceneParserTest {
     private static final Path FOLDER = Path.of("target", "test-scenes", "parser");
+    /** Where the named pipes go: apart from the files, whose names they would take. */
+    private static final Path PIPES = FOLDER.resolve("pipes");
 
     /** The lines of a small valid scene file. */
     private static final List<String> TINY = List.of(
@@ -304,14 +306,14 @@ class SceneParserTest {
         String tiny = String.join("\n", TINY);
         // ===== Equivalence Partitions Tests =====
         // TC01: the tiny scene through a pipe: the same tree as from a file, its 3 bodies and 1 light
-        Path pipe = TestFiles.fifo(FOLDER, "pipe.xml");
+        Path pipe = TestFiles.fifo(PIPES, "pipe.xml");
         TestFiles.feed(pipe, tiny);
         SceneElement root = SceneParser.parse(pipe);
         assertEquals("tiny", root.text("name"), "TC01: wrong scene name");
         assertEquals(3, root.child("geometries").children().size(), "TC01: the bodies must be read");
         assertEquals(1, root.child("lights").children().size(), "TC01: the light must be read");
         // TC02: a scene the schema refuses, through a pipe: the schema's message with its place, not an end of file
-        Path refused = TestFiles.fifo(FOLDER, "refused.xml");
+        Path refused = TestFiles.fifo(PIPES, "refused.xml");
         TestFiles.feed(refused, "<scene>\n<image width=\"0\"/>\n</scene>\n");
         SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(refused),
                 "TC02: width 0 must be refused");
@@ -321,12 +323,12 @@ class SceneParserTest {
 
         // ===== Boundary Values Tests =====
         // TC11: a pipe cut inside the XML declaration: the place is the end of what it gave (line 1, column 6)
-        Path cut = TestFiles.fifo(FOLDER, "cut.xml");
+        Path cut = TestFiles.fifo(PIPES, "cut.xml");
         TestFiles.feed(cut, "<?xml");
         e = assertThrows(SceneFileException.class, () -> SceneParser.parse(cut), "TC11: a cut pipe");
         assertEquals(cut + ":1:6: Premature end of file.", e.getMessage(), "TC11: wrong message");
         // TC12 (own): an empty pipe: a premature end at line 1, column 1
-        Path empty = TestFiles.fifo(FOLDER, "empty.xml");
+        Path empty = TestFiles.fifo(PIPES, "empty.xml");
         TestFiles.feed(empty, "");
         e = assertThrows(SceneFileException.class, () -> SceneParser.parse(empty), "TC12: an empty pipe");
         assertEquals(empty + ":1:1: Premature end of file.", e.getMessage(), "TC12: wrong message");

@@ -18,7 +18,8 @@ public final class TestFiles {
     }
 
     /**
-     * Writes a text file, creating its folder.
+     * Writes a text file, creating its folder; a named pipe of that name (left by an earlier run of a test),
+     * which writing would wait on forever, is replaced.
      *
      * @param folder the folder
      * @param name   the file's name
@@ -26,9 +27,12 @@ public final class TestFiles {
      * @return the file's path
      */
     public static Path write(Path folder, String name, String text) {
+        Path file = folder.resolve(name);
         try {
             Files.createDirectories(folder);
-            return Files.writeString(folder.resolve(name), text);
+            if (Files.exists(file) && !Files.isRegularFile(file) && !Files.isDirectory(file))
+                Files.delete(file);
+            return Files.writeString(file, text);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
