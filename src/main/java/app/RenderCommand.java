@@ -30,6 +30,8 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import primitives.FileNames;
+import primitives.Printable;
 import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.JitteredGrid;
@@ -192,9 +194,19 @@ public class RenderCommand implements Callable<Integer> {
      */
     public static CommandLine newCommandLine(boolean terminal) {
         return new CommandLine(new RenderCommand(terminal))
+                .registerConverter(Path.class, RenderCommand::path)
                 .setParameterExceptionHandler(RenderCommand::badArguments)
                 .setExecutionExceptionHandler((e, commandLine, parseResult) ->
                         printFailure(commandLine, ((RenderCommand) commandLine.getCommand()).failure(e)));
+    }
+
+    /** The path an argument names; one that cannot be a path (in the C locale, say) is a bad argument saying why. */
+    private static Path path(String name) {
+        try {
+            return FileNames.toPath(name);
+        } catch (IllegalArgumentException e) {
+            throw new CommandLine.TypeConversionException(e.getMessage());
+        }
     }
 
     /** Prints a bad argument's message, with picocli's suggestions and a hint, on one line. */
@@ -221,9 +233,12 @@ public class RenderCommand implements Callable<Integer> {
         return sceneFile + ": the scene cannot be rendered: " + problem;
     }
 
-    /** The text on one line: line breaks and the blanks around them become one space. */
+    /**
+     * The text on one line: line breaks and the blanks around them become one space, and what is left that
+     * a terminal could take for a command (a control character quoted from the input) a visible escape.
+     */
     private static String oneLine(String text) {
-        return text == null ? "" : text.strip().replaceAll("\\s*\\R\\s*", " ");
+        return text == null ? "" : Printable.of(text.strip().replaceAll("\\s*\\R\\s*", " "));
     }
 
     @Override
@@ -354,8 +369,8 @@ public class RenderCommand implements Callable<Integer> {
             return PreviewWindow.open(model);
         } catch (HeadlessException e) {
             if (!quiet) {
-                spec.commandLine().getErr().println(file + ": there is no display to show the preview window on;"
-                        + " rendering without it");
+                spec.commandLine().getErr().println(Printable.of(file) + ": there is no display to show the preview"
+                        + " window on; rendering without it");
                 spec.commandLine().getErr().flush();
             }
             return null;
@@ -565,7 +580,7 @@ public class RenderCommand implements Callable<Integer> {
         long shadow = tracer.getShadowRaysCount();
         long spread = tracer.getSpreadRaysCount();
         PrintWriter out = spec.commandLine().getOut();
-        out.printf(Locale.ROOT, "Image:        %s%n", file.toAbsolutePath().normalize());
+        out.printf(Locale.ROOT, "Image:        %s%n", Printable.of(file.toAbsolutePath().normalize()));
         out.printf(Locale.ROOT, "Size:         %d x %d pixels%n", picture.nX(), picture.nY());
         out.printf(Locale.ROOT, "Time:         %.3f s%n", seconds);
         out.printf(Locale.ROOT, "Primary rays: %d%n", primary);

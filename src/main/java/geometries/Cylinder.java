@@ -10,6 +10,7 @@ import primitives.Vector;
 
 import static primitives.Util.alignZero;
 import static primitives.Util.isZero;
+import static primitives.Util.requireNonNull;
 import static primitives.Util.requirePositive;
 
 /**
@@ -77,6 +78,7 @@ public class Cylinder extends Tube {
 
     @Override
     public Vector getNormal(Point3D point) {
+        requireNonNull(point, "point");
         Vector va = axisRay.getDir();
         Point3D p0 = axisRay.getP0();
         double s = (point.getX() - p0.getX()) * va.getX()

@@ -1,8 +1,12 @@
 package geometries;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.Deque;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Set;
 
 import accel.BoundingVolumeHierarchy;
 import primitives.Ray;
@@ -31,23 +35,48 @@ public class Geometries extends Intersectable {
     }
 
     /**
-     * Adds objects to the composite.
+     * Adds objects to the composite: all of them, or none when one is refused.
      *
      * @param geometries the objects to add
      * @return this composite
+     * @throws IllegalArgumentException when the array or an object is null, or an object is this composite
+     *                                  or a composite that holds it, directly or inside another: the
+     *                                  composite would contain itself, and every walk of it would not end
      */
     public Geometries add(Intersectable... geometries) {
         if (geometries == null)
             throw new IllegalArgumentException("geometries to add must not be null");
-        for (Intersectable geometry : geometries)
+        for (Intersectable geometry : geometries) {
             if (geometry == null)
                 throw new IllegalArgumentException("a geometry to add is null");
+            if (geometry instanceof Geometries composite && composite.reaches(this))
+                throw new IllegalArgumentException("a Geometries cannot be added to itself, nor to a Geometries it"
+                        + " holds (directly or inside another): it would contain itself");
+        }
         Collections.addAll(items, geometries);
         for (Intersectable geometry : geometries)
             if (geometry instanceof Geometries composite)
                 composites.add(composite);
         ++additions;
         return this;
+    }
+
+    /**
+     * Whether a composite is this one or among those it holds, at any depth: a walk with a stack of its
+     * own (a deep nesting overflows no call stack) that visits each composite once (one held in many
+     * places is not walked again).
+     */
+    private boolean reaches(Geometries target) {
+        Deque<Geometries> open = new ArrayDeque<>(List.of(this));
+        Set<Geometries> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+        while (!open.isEmpty()) {
+            Geometries composite = open.pop();
+            if (composite == target)
+                return true;
+            if (seen.add(composite))
+                open.addAll(composite.composites);
+        }
+        return false;
     }
 
     /**

@@ -34,6 +34,8 @@ public abstract class Geometry extends Intersectable {
      *
      * @param point a point on the surface
      * @return the outward unit normal there
+     * @throws IllegalArgumentException when the point is null, or the body has no normal there (the centre of
+     *                                  a sphere, a point on a tube's axis)
      */
     public abstract Vector getNormal(Point3D point);
 

@@ -86,6 +86,7 @@ public class Plane extends Geometry {
 
     @Override
     public Vector getNormal(Point3D point) {
+        requireNonNull(point, "point");
         return normal;
     }
 

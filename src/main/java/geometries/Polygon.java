@@ -164,6 +164,7 @@ public class Polygon extends Geometry {
 
     @Override
     public Vector getNormal(Point3D point) {
+        requireNonNull(point, "point");
         return plane.getNormal();
     }
 

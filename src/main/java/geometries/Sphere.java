@@ -63,7 +63,7 @@ public class Sphere extends Geometry {
 
     @Override
     public Vector getNormal(Point3D point) {
-        return point.subtract(center).normalize();
+        return requireNonNull(point, "point").subtract(center).normalize();
     }
 
     @Override

@@ -55,6 +55,7 @@ public class Tube extends Geometry {
 
     @Override
     public Vector getNormal(Point3D point) {
+        requireNonNull(point, "point");
         Point3D p0 = axisRay.getP0();
         Vector dir = axisRay.getDir();
         double t = alignZero((point.getX() - p0.getX()) * dir.getX()

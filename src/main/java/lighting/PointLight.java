@@ -191,9 +191,15 @@ public class PointLight extends Light implements AreaLightSource {
 
     @Override
     public Vector getL(Point3D p) {
-        if (requireNonNull(p, "lit point").equals(position))
+        if (isAt(p))
             throw new IllegalArgumentException("the lit point " + p + " coincides with the light's position");
         return p.subtract(position).normalize();
+    }
+
+    /** {@return whether the point is the light's position (within the tolerance of {@link Point3D#equals})} */
+    @Override
+    public boolean isAt(Point3D p) {
+        return requireNonNull(p, "lit point").equals(position);
     }
 
     @Override

@@ -57,31 +57,36 @@ public class ImageTexture implements Texture {
      */
     public ImageTexture(Path file, double size) {
         this.file = requireNonNull(file, "texture file");
-        this.size = requirePositive(size, "size of texture " + file);
+        this.size = requirePositive(size, "size of texture " + Printable.of(file));
         BufferedImage image = read(file);
         this.width = image.getWidth();
         this.height = image.getHeight();
         this.texels = image.getRGB(0, 0, width, height, null, 0, width);
     }
 
-    /** Reads the image, checking its size before decoding it. */
+    /**
+     * Reads the image, checking its size before decoding it. It must be a regular file: a pipe or a
+     * device, which could keep the reading waiting forever, is refused.
+     */
     private static BufferedImage read(Path file) {
         if (Files.isDirectory(file))
-            throw new IllegalArgumentException("texture file " + file + " is a folder, not an image");
+            throw Printable.refusal("texture file " + file + " is a folder, not an image", null);
+        if (Files.exists(file) && !Files.isRegularFile(file))
+            throw Printable.refusal("texture file " + file + " is not a regular file but a pipe or a device, which could"
+                    + " keep the reading waiting", null);
         BufferedImage image;
         try (InputStream bytes = Files.newInputStream(file);
              ImageInputStream in = ImageIO.createImageInputStream(bytes)) {
             image = in == null ? null : decode(in, file);
         } catch (NoSuchFileException e) {
-            throw new IllegalArgumentException("texture file not found: " + file, e);
+            throw Printable.refusal("texture file not found: " + file, e);
         } catch (AccessDeniedException e) {
-            throw new IllegalArgumentException("cannot read texture file " + file + ": permission denied", e);
+            throw Printable.refusal("cannot read texture file " + file + ": permission denied", e);
         } catch (IOException e) {
-            throw new IllegalArgumentException("cannot read texture file " + file + ": " + e.getMessage(), e);
+            throw Printable.refusal("cannot read texture file " + file + ": " + e.getMessage(), e);
         }
         if (image == null)
-            throw new IllegalArgumentException("texture file " + file + " is not an image ImageIO can read"
-                    + " (PNG or JPEG)");
+            throw Printable.refusal("texture file " + file + " is not an image ImageIO can read (PNG or JPEG)", null);
         return image;
     }
 
@@ -95,8 +100,8 @@ public class ImageTexture implements Texture {
             reader.setInput(in, true, true);
             long pixels = (long) reader.getWidth(0) * reader.getHeight(0);
             if (pixels > MAX_PIXELS)
-                throw new IllegalArgumentException("texture file " + file + " has " + pixels
-                        + " pixels, more than the " + MAX_PIXELS + " a texture may have");
+                throw Printable.refusal("texture file " + file + " has " + pixels + " pixels, more than the " + MAX_PIXELS
+                        + " a texture may have", null);
             return reader.read(0);
         } finally {
             reader.dispose();

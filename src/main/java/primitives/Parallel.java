@@ -1,5 +1,7 @@
 package primitives;
 
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.IntConsumer;
@@ -20,6 +22,11 @@ public final class Parallel {
      * more as there are tasks for. Each thread takes the next task left until none is; after a failure
      * no more tasks are handed out, and the first failure (an exception, or an error such as running
      * out of memory) is thrown again on the calling thread once every thread has stopped.
+     * <p>
+     * Interrupting the calling thread stops the work: no task is started after it (a task under way
+     * ends), and once every thread has stopped a {@link CancellationException} says how many tasks were
+     * done, the calling thread's interrupt flag still set, as it is whenever the calling thread was
+     * interrupted. Work that was complete when the interruption came returns normally (the flag set).
      *
      * @param count   the number of tasks, 0 or more
      * @param threads the number of threads, 1 or more
@@ -27,7 +34,7 @@ public final class Parallel {
      * @param task    the task, called with its number
      * @throws IllegalArgumentException when the count is negative, the threads fewer than 1, or the
      *                                  name or task null
-     * @throws IllegalStateException    when the calling thread is interrupted while it waits for the others
+     * @throws CancellationException    when the calling thread is interrupted before every task is done
      */
     public static void forEach(int count, int threads, String name, IntConsumer task) {
         if (count < 0)
@@ -36,12 +43,20 @@ public final class Parallel {
             throw new IllegalArgumentException("number of threads must be 1 or more, got " + threads);
         requireNonNull(name, "thread name");
         requireNonNull(task, "task");
+        Thread caller = Thread.currentThread();
         AtomicInteger next = new AtomicInteger();
+        AtomicInteger done = new AtomicInteger();
+        // set when the wait for the helpers is interrupted, which clears the calling thread's flag
+        AtomicBoolean stopped = new AtomicBoolean();
         AtomicReference<Throwable> failure = new AtomicReference<>();
         Runnable worker = () -> {
             try {
-                for (int t = next.getAndIncrement(); t < count && failure.get() == null; t = next.getAndIncrement())
+                for (int t = next.getAndIncrement(); t < count && failure.get() == null; t = next.getAndIncrement()) {
+                    if (stopped.get() || caller.isInterrupted())
+                        return;
                     task.accept(t);
+                    done.incrementAndGet();
+                }
             } catch (RuntimeException | Error e) { // thrown again by the calling thread
                 failure.compareAndSet(null, e);
             }
@@ -52,16 +67,34 @@ public final class Parallel {
             helpers[h].start();
         }
         worker.run();
-        try {
-            for (Thread helper : helpers)
-                helper.join();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while waiting for the " + name + " threads", e);
-        }
+        joinAll(helpers, stopped);
         if (failure.get() instanceof RuntimeException e)
             throw e;
         if (failure.get() instanceof Error e)
             throw e;
+        if (done.get() < count)
+            throw new CancellationException("interrupted: the " + name + " threads stopped after " + done.get() + " of "
+                    + count + " tasks");
+    }
+
+    /**
+     * Waits for threads to end, whatever interrupts the wait, so that none is left running: an interruption
+     * of the wait stops them after their tasks under way, and sets the calling thread's flag again at the end.
+     *
+     * @param threads the threads
+     * @param stopped set when the wait is interrupted: the threads take no more tasks
+     */
+    private static void joinAll(Thread[] threads, AtomicBoolean stopped) {
+        boolean interrupted = false;
+        for (Thread thread : threads)
+            while (thread.isAlive())
+                try {
+                    thread.join();
+                } catch (InterruptedException e) { // the flag is cleared: the threads see the stop instead
+                    interrupted = true;
+                    stopped.set(true);
+                }
+        if (interrupted)
+            Thread.currentThread().interrupt();
     }
 }

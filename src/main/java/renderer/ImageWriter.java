@@ -19,6 +19,8 @@ import java.util.concurrent.atomic.AtomicLong;
 import javax.imageio.ImageIO;
 
 import primitives.Color;
+import primitives.FileNames;
+import primitives.Printable;
 
 import static primitives.Util.requireNonNull;
 
@@ -58,8 +60,9 @@ public class ImageWriter {
      * @param imageName the file name, without extension
      * @param nX        the number of columns, positive
      * @param nY        the number of rows, positive
-     * @throws IllegalArgumentException when the name is blank or null, or the size is not positive or has
-     *                                  more than {@link #MAX_PIXELS} pixels
+     * @throws IllegalArgumentException when the name is blank or null, cannot be a path or leads out of
+     *                                  {@code images/} (an absolute name, or {@code ..} above it), or the
+     *                                  size is not positive or has more than {@link #MAX_PIXELS} pixels
      */
     public ImageWriter(String imageName, int nX, int nY) {
         this(imageName, nX, nY, DEFAULT_FOLDER);
@@ -68,15 +71,17 @@ public class ImageWriter {
     /**
      * Creates an image that will be written to {@code <folder>/<imageName>.png}.
      *
-     * @param imageName the file name, without extension
+     * @param imageName the file name, without extension; it may lead into a folder inside the folder
+     *                  ({@code sub/picture}), never out of it
      * @param nX        the number of columns, positive
      * @param nY        the number of rows, positive
      * @param folder    the folder to write to (created when missing)
-     * @throws IllegalArgumentException when the name is blank, an argument is null, or the size is not
-     *                                  positive or has more than {@link #MAX_PIXELS} pixels
+     * @throws IllegalArgumentException when the name is blank, cannot be a path or leads out of the folder
+     *                                  (an absolute name, or {@code ..} above it), an argument is null, or
+     *                                  the size is not positive or has more than {@link #MAX_PIXELS} pixels
      */
     public ImageWriter(String imageName, int nX, int nY, Path folder) {
-        this(requireNonNull(folder, "image folder").resolve(requireName(imageName) + EXTENSION), nX, nY);
+        this(fileIn(requireNonNull(folder, "image folder"), requireName(imageName)), nX, nY);
     }
 
     /**
@@ -103,6 +108,19 @@ public class ImageWriter {
         this.pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
     }
 
+    /**
+     * The file of an image's name in its folder: {@code <folder>/<imageName>.png}. A name may lead into a
+     * folder inside (sub/picture), never out of it: an absolute name, or one whose ".." climbs above the
+     * folder, is refused.
+     */
+    private static Path fileIn(Path folder, String imageName) {
+        Path file = folder.resolve(FileNames.toPath(imageName + EXTENSION));
+        if (!file.toAbsolutePath().normalize().startsWith(folder.toAbsolutePath().normalize()))
+            throw new IllegalArgumentException("image name '" + Printable.of(imageName) + "' leads out of its folder "
+                    + Printable.of(folder) + ": give a name inside it, without an absolute path or '..' above it");
+        return file;
+    }
+
     private static String requireName(String imageName) {
         if (requireNonNull(imageName, "image name").isBlank())
             throw new IllegalArgumentException("image name must not be blank");
@@ -122,7 +140,7 @@ public class ImageWriter {
         int dot = fileName.lastIndexOf('.');
         String format = dot > 0 ? FORMATS.get(fileName.substring(dot).toLowerCase(Locale.ROOT)) : null;
         if (format == null)
-            throw new IllegalArgumentException("the image file " + file + " must end with one of "
+            throw new IllegalArgumentException("the image file " + Printable.of(file) + " must end with one of "
                     + String.join(", ", new TreeSet<>(FORMATS.keySet())));
         return format;
     }
@@ -217,9 +235,11 @@ public class ImageWriter {
      * missing, and checks that a file can be made there and that the path is not a folder.
      *
      * @param file the image file
-     * @throws UncheckedIOException when no image can be written there
+     * @throws UncheckedIOException     when no image can be written there
+     * @throws IllegalArgumentException when the file is null
      */
     public static void checkOutput(Path file) {
+        requireNonNull(file, "image file");
         try {
             prepareFolder(file);
             Files.delete(Files.createFile(temporaryPath(file)));
@@ -264,7 +284,10 @@ public class ImageWriter {
                 + TEMPORARY_COUNT.incrementAndGet() + ".tmp");
     }
 
-    /** The failure to write an image, in the user's terms: what is in the way, not the exception's class. */
+    /**
+     * The failure to write an image, in the user's terms: what is in the way, not the exception's class;
+     * the file's name made {@link Printable printable}.
+     */
     private static UncheckedIOException cannotWrite(Path file, IOException e) {
         String reason;
         if (e instanceof AccessDeniedException)
@@ -277,6 +300,6 @@ public class ImageWriter {
             reason = f.getReason();
         else
             reason = e.getMessage();
-        return new UncheckedIOException(file + ": cannot write image: " + reason, e);
+        return new UncheckedIOException(Printable.of(file + ": cannot write image: " + reason), e);
     }
 }

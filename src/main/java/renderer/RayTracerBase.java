@@ -50,6 +50,7 @@ public abstract class RayTracerBase {
      *
      * @param ray the ray
      * @return the colour it sees (the background when it hits nothing)
+     * @throws IllegalArgumentException when the ray is null
      */
     public abstract Color traceRay(Ray ray);
 

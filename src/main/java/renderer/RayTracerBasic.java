@@ -16,6 +16,7 @@ import primitives.Vector;
 import scene.Scene;
 
 import static primitives.Util.alignZero;
+import static primitives.Util.requireNonNull;
 
 /**
  * The course's ray tracer: Phong local lighting with shadows that let light through transparent
@@ -23,6 +24,14 @@ import static primitives.Util.alignZero;
  * bent by Snell's law for a material with an index of refraction (see {@link Material#setIor}; its
  * shadows stay the course's, kT through each surface). A textured body's colour at a point tints its
  * diffuse reflection and its emission ({@link geometries.Geometry#setTexture}).
+ * <p>
+ * Points that coincide are legal scenes and render. A point where a light sits (a point light on a
+ * plane or a sphere, {@link LightSource#isAt}) receives nothing from that light: the light has no
+ * direction there, and the surface around the point sees it edge-on, so it receives nothing from it
+ * either; the other lights shine on it as anywhere. A hit where the body has no normal (it rounds onto
+ * the centre of a sphere, or the axis of a tube or cylinder, too thin for the precision of its
+ * coordinates) is shaded as a surface facing the ray: the normal is the ray's direction reversed, which
+ * is a sphere's own normal at the nearer point of a ray through its centre.
  */
 public class RayTracerBasic extends RayTracerBase {
     /** The deepest recursion of reflected and refracted rays. */
@@ -52,9 +61,12 @@ public class RayTracerBasic extends RayTracerBase {
     /**
      * {@inheritDoc} The calling thread's state is looked up once here and passed down to every
      * intersection, light and spread ray of the path.
+     *
+     * @throws IllegalArgumentException {@inheritDoc}
      */
     @Override
     public Color traceRay(Ray ray) {
+        requireNonNull(ray, "ray to trace");
         ThreadState state = threadState();
         GeoPoint closestPoint = findClosestIntersection(ray, state);
         return closestPoint == null ? scene.background : calcColor(closestPoint, ray, state);
@@ -72,13 +84,17 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     /**
-     * Takes the bounding volume hierarchy over the scene's bodies, built on up to a number of threads
+     * Checks the scene ({@link Scene#requireComplete()}: no field of it null, no null light), then takes
+     * the bounding volume hierarchy over the scene's bodies, built on up to a number of threads
      * unless it was built over them as they are now (the scene's composite keeps it, see
      * {@link geometries.Geometries#hierarchy}, so a new tracer over an unchanged scene builds nothing),
      * and has it read the bodies' materials again ({@link BoundingVolumeHierarchy#readMaterials}).
+     *
+     * @throws IllegalArgumentException when a field of the scene is null or it holds a null light
      */
     @Override
     protected synchronized void prepare(int threads) {
+        scene.requireComplete();
         BoundingVolumeHierarchy bvh = accelerator;
         if (bvh == null || !bvh.isBuiltFrom(scene.geometries))
             accelerator = bruteForce ? BoundingVolumeHierarchy.scan(scene.geometries)
@@ -115,7 +131,7 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     private Color calcColor(GeoPoint geoPoint, Ray ray, int level, double k, ThreadState state) {
-        Vector n = geoPoint.getNormal();
+        Vector n = normal(geoPoint, ray);
         Texture texture = geoPoint.geometry.getTexture();
         Color emission = geoPoint.geometry.getEmission();
         Color tint = NO_TINT;
@@ -134,7 +150,20 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     /**
-     * Diffuse and specular light from every light source that reaches the point. The sum is kept in
+     * The unit normal at a hit; where the body has none (the hit rounds onto a sphere's centre or a tube's
+     * axis, so the body refuses the point), the ray's direction reversed: the surface faces the ray.
+     */
+    private static Vector normal(GeoPoint geoPoint, Ray ray) {
+        try {
+            return geoPoint.getNormal();
+        } catch (IllegalArgumentException e) {
+            return ray.getDir().scale(-1);
+        }
+    }
+
+    /**
+     * Diffuse and specular light from every light source that reaches the point, but for a light that sits
+     * at the point. The sum is kept in
      * raw components, with the same arithmetic as adding the lights' {@link Color}s: each light's
      * intensity scaled by its transparency, then by the diffuse and the specular factor, both added.
      * A texture's tint multiplies the diffuse factor channel by channel ({@link #NO_TINT}, 1, for a
@@ -149,6 +178,8 @@ public class RayTracerBasic extends RayTracerBase {
         double g = 0;
         double b = 0;
         for (LightSource light : scene.lights) {
+            if (light.isAt(geoPoint.point))
+                continue; // no direction: the point receives nothing from this light (see the class comment)
             Vector l = light.getL(geoPoint.point);
             double nl = alignZero(n.dotProduct(l));
             if (nl * nv > 0) { // the light and the viewer are on the same side of the surface

@@ -1,6 +1,7 @@
 package renderer;
 
 import java.util.MissingResourceException;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.LongConsumer;
 
@@ -268,9 +269,17 @@ public class Render {
 
     /**
      * Renders the picture into the image (call {@link #writeToImage()} to save it).
+     * <p>
+     * Interrupting the thread that called it ({@link Thread#interrupt()}) stops the render: no tile is
+     * started after it, and once the tiles under way are done a {@link CancellationException} says how many
+     * were rendered, with the thread's interrupt flag still set; the image then holds only those tiles, so
+     * do not write it. A render that was complete when the interruption came returns normally (the flag
+     * set, for the caller to see).
      *
      * @throws MissingResourceException naming the image writer, camera or ray tracer when it is not set
      *                                  (a scene set with {@link #setScene} stands for the ray tracer)
+     * @throws IllegalArgumentException when the scene is not complete (see {@link Scene#requireComplete()})
+     * @throws CancellationException    when the calling thread is interrupted before the picture is complete
      */
     public void renderImage() {
         requireImageWriter();
@@ -362,7 +371,12 @@ public class Render {
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
-            System.out.println("\r100%");
+            System.out.printf("\r%3d%%%n", percentDone()); // 100 %, or where an interruption stopped
+        }
+
+        /** {@return the share of the pixels rendered so far, in percent} */
+        private long percentDone() {
+            return 100L * pixelsDone.get() / ((long) nX * nY);
         }
 
         /** Renders one tile and tells the progress listener, if any, of the pixels done so far. */
@@ -493,7 +507,7 @@ public class Render {
         private void printProgress() {
             try {
                 while (!Thread.currentThread().isInterrupted()) {
-                    System.out.printf("\r%3d%%", 100L * pixelsDone.get() / ((long) nX * nY));
+                    System.out.printf("\r%3d%%", percentDone());
                     System.out.flush();
                     Thread.sleep(PROGRESS_INTERVAL);
                 }

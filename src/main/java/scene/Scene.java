@@ -1,6 +1,5 @@
 package scene;
 
-import java.util.ArrayList;
 import java.util.List;
 
 import geometries.Geometries;
@@ -23,8 +22,8 @@ public class Scene {
     public AmbientLight ambientLight = new AmbientLight();
     /** The bodies. */
     public Geometries geometries = new Geometries();
-    /** The light sources. */
-    public List<LightSource> lights = new ArrayList<>();
+    /** The light sources: a list that refuses null, until another list is set. */
+    public List<LightSource> lights = new LightList();
 
     /**
      * Creates an empty scene.
@@ -73,12 +72,47 @@ public class Scene {
      *
      * @param lights the light sources
      * @return this scene
+     * @throws IllegalArgumentException when the list is null or holds null
      */
     public Scene setLights(List<LightSource> lights) {
-        requireNonNull(lights, "scene lights");
-        for (LightSource light : lights)
-            requireNonNull(light, "a scene light");
-        this.lights = lights;
+        this.lights = requireLights(lights);
         return this;
+    }
+
+    /**
+     * Checks that the scene can be rendered as its public fields are now: none of them null, and no null
+     * among the lights. A renderer calls this before any pixel, since the fields may have been assigned
+     * directly (and a list set with {@link #setLights} changed since).
+     *
+     * @throws IllegalArgumentException naming the field, or the index of a null light
+     */
+    public void requireComplete() {
+        requireNonNull(background, "scene.background");
+        requireNonNull(ambientLight, "scene.ambientLight");
+        requireNonNull(geometries, "scene.geometries");
+        requireLights(lights);
+    }
+
+    /** Checks a list of lights: not null, and no null in it; returns it. */
+    private static List<LightSource> requireLights(List<LightSource> lights) {
+        requireNonNull(lights, "scene.lights");
+        for (int i = 0; i < lights.size(); ++i)
+            requireLight(lights.get(i), i);
+        return lights;
+    }
+
+    /**
+     * Checks a light of the scene's list.
+     *
+     * @param light the light
+     * @param index its place in the list
+     * @return the light
+     * @throws IllegalArgumentException when the light is null
+     */
+    static LightSource requireLight(LightSource light, int index) {
+        if (light == null)
+            throw new IllegalArgumentException("scene.lights must not hold null (at index " + index
+                    + "): every light must be a light source");
+        return light;
     }
 }

@@ -1,6 +1,7 @@
 package scenefile;
 
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.io.Reader;
 import java.io.StringReader;
 import java.nio.charset.StandardCharsets;
@@ -24,6 +25,7 @@ import de.javagl.obj.ObjReader;
 import geometries.Triangle;
 import geometries.TriangleMesh;
 import primitives.Point3D;
+import primitives.Printable;
 
 import static primitives.Util.requireNonNull;
 import static primitives.Util.requirePositive;
@@ -31,6 +33,10 @@ import static primitives.Util.requirePositive;
 /**
  * Reads a triangle mesh from a Wavefront OBJ file (with the de.javagl:obj library) into a flat
  * {@link TriangleMesh}: the file's vertices once each, its triangles as indices into them.
+ * <p>
+ * The file is read as UTF-8, without a byte-order mark at its start (bytes that are not UTF-8, which
+ * can only stand in a comment or a name, are read as U+FFFD). It must be a regular file: a pipe or a
+ * device, which could keep the reading waiting forever, is refused.
  * <p>
  * The vertices ({@code v}) and the faces ({@code f}) make the mesh; groups and materials are ignored.
  * When every face gives its corners texture coordinates ({@code vt}) the mesh gets them as UVs, and when
@@ -50,6 +56,8 @@ public final class ObjMesh {
     public static final int MAX_LINE_LENGTH = 1 << 20;
     /** How many characters are read at a time. */
     private static final int BUFFER_SIZE = 1 << 16;
+    /** The byte-order mark, which some editors write at the start of a UTF-8 file. */
+    private static final char BYTE_ORDER_MARK = '\uFEFF';
 
     /** Which normals a mesh read from a file gets. */
     public enum Normals {
@@ -138,9 +146,9 @@ public final class ObjMesh {
      */
     public static TriangleMesh readMesh(Path file, double scale, Point3D position, Normals normals) {
         requireNonNull(file, "OBJ file");
-        requirePositive(scale, "scale of OBJ file " + file);
-        requireNonNull(position, "position of OBJ file " + file);
-        requireNonNull(normals, "normals of OBJ file " + file);
+        requirePositive(scale, "scale of OBJ file " + Printable.of(file));
+        requireNonNull(position, "position of OBJ file " + Printable.of(file));
+        requireNonNull(normals, "normals of OBJ file " + Printable.of(file));
 
         Obj obj = parse(file);
         Point3D[] vertices = vertices(obj, file, scale, position);
@@ -165,8 +173,8 @@ public final class ObjMesh {
             }
         }
         if (length == 0)
-            throw new IllegalArgumentException("OBJ file " + file + " has no triangles"
-                    + (faceCount == 0 ? "" : " (all its " + faceCount + " faces are degenerate)"));
+            throw Printable.refusal("OBJ file " + file + " has no triangles"
+                    + (faceCount == 0 ? "" : " (all its " + faceCount + " faces are degenerate)"), null);
         int[] kept = Arrays.copyOf(triangles, length);
         double[] positions = coordinates(vertices);
         TriangleMesh mesh = new TriangleMesh(corners.coordinates(positions), kept);
@@ -270,8 +278,8 @@ public final class ObjMesh {
                     double z = normal.getZ();
                     double length = Math.sqrt(x * x + y * y + z * z);
                     if (!(length > 0 && length < Double.POSITIVE_INFINITY))
-                        throw new IllegalArgumentException("bad OBJ file " + file + ": normal " + (n + 1) + " (vn) "
-                                + normal + " has no direction (its length is " + length + ")");
+                        throw Printable.refusal("bad OBJ file " + file + ": normal " + (n + 1) + " (vn) "
+                                + normal + " has no direction (its length is " + length + ")", null);
                     xyz[3 * i] = x / length;
                     xyz[3 * i + 1] = y / length;
                     xyz[3 * i + 2] = z / length;
@@ -309,18 +317,21 @@ public final class ObjMesh {
      * indices}; every failure becomes a one-line message naming the file.
      */
     private static Obj parse(Path file) {
+        if (Files.exists(file) && !Files.isRegularFile(file))
+            throw Printable.refusal("bad OBJ file " + file + ": " + (Files.isDirectory(file) ? "it is a folder"
+                    : "it is not a regular file but a pipe or a device, which could keep the reading waiting"), null);
         String text;
         try {
             text = checkedText(file);
         } catch (NoSuchFileException e) {
-            throw new IllegalArgumentException("OBJ file not found: " + file, e);
+            throw Printable.refusal("OBJ file not found: " + file, e);
         } catch (IOException e) {
-            throw new IllegalArgumentException("bad OBJ file " + file + ": " + reason(e), e);
+            throw Printable.refusal("bad OBJ file " + file + ": " + reason(e), e);
         }
         try {
             return ObjReader.read(new StringReader(text));
         } catch (IOException | RuntimeException e) {
-            throw new IllegalArgumentException("bad OBJ file " + file + ": " + reason(e), e);
+            throw Printable.refusal("bad OBJ file " + file + ": " + reason(e), e);
         }
     }
 
@@ -340,18 +351,22 @@ public final class ObjMesh {
     }
 
     /**
-     * The file's text, read with lines of at most {@link #MAX_LINE_LENGTH} characters (so a file
-     * without line breaks, such as /dev/zero, is refused, not read into memory) and every face index
-     * checked.
+     * The file's text, read as UTF-8 without the byte-order mark, with lines of at most
+     * {@link #MAX_LINE_LENGTH} characters (so a file without line breaks is refused, not read into
+     * memory) and every face index checked.
      */
     private static String checkedText(Path file) throws IOException {
         StringBuilder text = new StringBuilder();
         StringBuilder line = new StringBuilder();
         FaceIndexChecker checker = new FaceIndexChecker(file);
         char[] buffer = new char[BUFFER_SIZE];
-        try (Reader in = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
-            for (int n = in.read(buffer); n >= 0; n = in.read(buffer))
-                for (int k = 0; k < n; ++k) {
+        // a reader of a charset replaces bytes it cannot decode with U+FFFD
+        try (Reader in = new InputStreamReader(Files.newInputStream(file), StandardCharsets.UTF_8)) {
+            boolean first = true; // the first characters read, which may start with a byte-order mark
+            for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
+                int start = first && buffer[0] == BYTE_ORDER_MARK ? 1 : 0;
+                first = false;
+                for (int k = start; k < n; ++k) {
                     if (buffer[k] == '\n') {
                         checker.accept(line);
                         text.append(line).append('\n');
@@ -362,6 +377,7 @@ public final class ObjMesh {
                     else
                         line.append(buffer[k]);
                 }
+            }
         }
         checker.accept(line);
         checker.finish();
@@ -377,12 +393,12 @@ public final class ObjMesh {
         for (int i = 0; i < vertices.length; ++i) {
             FloatTuple v = obj.getVertex(i);
             if (v.getDimensions() < 3)
-                throw new IllegalArgumentException("bad OBJ file " + file + ": vertex " + (i + 1) + " has "
-                        + v.getDimensions() + " coordinates instead of 3");
+                throw Printable.refusal("bad OBJ file " + file + ": vertex " + (i + 1) + " has "
+                        + v.getDimensions() + " coordinates instead of 3", null);
             try {
                 vertices[i] = new Point3D(x0 + scale * v.getX(), y0 + scale * v.getY(), z0 + scale * v.getZ());
             } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException("bad OBJ file " + file + ": vertex " + (i + 1) + " " + v
+                throw Printable.refusal("bad OBJ file " + file + ": vertex " + (i + 1) + " " + v
                         + " scaled by " + scale + " and moved to " + position + ": " + e.getMessage(), e);
             }
         }
@@ -471,7 +487,7 @@ public final class ObjMesh {
 
         /** A problem at the line being read. */
         IllegalArgumentException error(String problem) {
-            return new IllegalArgumentException("bad OBJ file " + file + ":" + lineNumber + ": " + problem);
+            return Printable.refusal("bad OBJ file " + file + ":" + lineNumber + ": " + problem, null);
         }
     }
 }

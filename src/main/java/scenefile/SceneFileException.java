@@ -2,9 +2,13 @@ package scenefile;
 
 import java.nio.file.Path;
 
+import primitives.Printable;
+
 /**
  * A scene file that cannot be read: its message is one line naming the file, the line and column
  * where the parser knows them, and what is wrong — {@code scenes/a.xml:12:40: radius must be positive}.
+ * The file's name and the problem, which may quote the file's text, are made {@link Printable printable}:
+ * a control character in them reaches no terminal.
  */
 public class SceneFileException extends IllegalArgumentException {
     private static final long serialVersionUID = 1L;
@@ -31,11 +35,11 @@ public class SceneFileException extends IllegalArgumentException {
      * @param cause   the exception that revealed the problem, or null
      */
     public SceneFileException(Path file, int line, int column, String problem, Throwable cause) {
-        super(where(file, line, column) + ": " + problem, cause);
+        super(Printable.of(where(file, line, column) + ": " + problem), cause);
         this.file = file;
         this.line = line;
         this.column = column;
-        this.problem = problem;
+        this.problem = Printable.of(problem);
     }
 
     /**
@@ -70,7 +74,7 @@ public class SceneFileException extends IllegalArgumentException {
         return column;
     }
 
-    /** {@return what is wrong, without the file and position} */
+    /** {@return what is wrong, without the file and position, made printable} */
     public String getProblem() {
         return problem;
     }

@@ -19,6 +19,7 @@ import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
 import primitives.CheckerTexture;
+import primitives.FileNames;
 import primitives.ImageTexture;
 import primitives.Material;
 import primitives.Point3D;
@@ -208,8 +209,8 @@ public final class SceneLoader {
     private static TriangleMesh mesh(SceneElement mesh, Path folder) {
         ObjMesh.Normals normals = !mesh.has("smooth") ? ObjMesh.Normals.FILE
                 : mesh.flag("smooth") ? ObjMesh.Normals.SMOOTH : ObjMesh.Normals.FLAT;
-        TriangleMesh triangles = ObjMesh.readMesh(folder.resolve(mesh.text("file")), mesh.number("scale"),
-                mesh.point("position"), normals);
+        Path file = folder.resolve(FileNames.toPath(mesh.text("file")));
+        TriangleMesh triangles = ObjMesh.readMesh(file, mesh.number("scale"), mesh.point("position"), normals);
         Point3D farthest = Point3D.ZERO;
         for (int v = 0; v < triangles.getVerticesCount(); ++v) {
             Point3D vertex = triangles.getVertex(v);
@@ -255,7 +256,7 @@ public final class SceneLoader {
         SceneElement image = element.child("image-texture");
         SceneElement checker = element.child("checker-texture");
         if (image != null)
-            body.setTexture(build(image, () -> new ImageTexture(folder.resolve(image.text("file")),
+            body.setTexture(build(image, () -> new ImageTexture(folder.resolve(FileNames.toPath(image.text("file"))),
                     image.number("size"))));
         else if (checker != null)
             body.setTexture(build(checker, () -> new CheckerTexture(checker.color("color1"), checker.color("color2"),

@@ -1,6 +1,7 @@
 package scenefile;
 
-import java.io.BufferedInputStream;
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UnsupportedEncodingException;
@@ -91,7 +92,9 @@ final class SceneParser {
 
     /**
      * Reads and checks a scene file. A first pass checks the nesting depth and the length of the
-     * attributes' values, so that the schema never sees a file that would take it long to check.
+     * attributes' values, so that the schema never sees a file that would take it long to check; the
+     * second, with the schema, reads the bytes the first one read. The file is read once, so it may be a
+     * pipe ({@code /dev/stdin}, a shell's {@code <(…)}).
      *
      * @param file the scene file
      * @return its root element
@@ -100,17 +103,21 @@ final class SceneParser {
     static SceneElement parse(Path file) {
         if (Files.isDirectory(file))
             throw new SceneFileException(file, "is a folder, not a scene file", null);
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         TreeBuilder builder = new TreeBuilder(file);
         try {
-            read(file, newParser(null), new LimitsChecker());
-            read(file, newParser(SCENE_SCHEMA), builder);
+            try (InputStream in = new CopyingStream(Files.newInputStream(file), bytes)) {
+                read(in, file, newParser(null), new LimitsChecker());
+            }
+            read(new ByteArrayInputStream(bytes.toByteArray()), file, newParser(SCENE_SCHEMA), builder);
             return builder.root;
         } catch (NoSuchFileException e) {
             throw new SceneFileException(file, "no such scene file", e);
         } catch (AccessDeniedException e) {
             throw new SceneFileException(file, "cannot read the scene file: permission denied", e);
         } catch (SAXParseException e) {
-            int[] place = e.getLineNumber() > 0 ? new int[] {e.getLineNumber(), e.getColumnNumber()} : end(file);
+            int[] place = e.getLineNumber() > 0 ? new int[] {e.getLineNumber(), e.getColumnNumber()}
+                    : end(bytes.toByteArray());
             throw new SceneFileException(file, place[0], place[1], plain(e.getMessage(), builder.openElement()), e);
         } catch (SAXException e) {
             throw new SceneFileException(file, "not a scene file: " + e.getMessage(), e);
@@ -122,27 +129,57 @@ final class SceneParser {
         }
     }
 
-    private static void read(Path file, SAXParser parser, DefaultHandler handler) throws IOException, SAXException {
-        try (InputStream in = Files.newInputStream(file)) {
-            InputSource source = new InputSource(in);
-            source.setSystemId(file.toUri().toString());
-            parser.parse(source, handler);
-        }
+    private static void read(InputStream in, Path file, SAXParser parser, DefaultHandler handler)
+            throws IOException, SAXException {
+        InputSource source = new InputSource(in);
+        source.setSystemId(file.toUri().toString());
+        parser.parse(source, handler);
     }
 
-    /** The line and column just after the file's last character, where a file cut short ends. */
-    private static int[] end(Path file) {
+    /** The line and column just after the last of the bytes read, where a file cut short ends. */
+    private static int[] end(byte[] bytes) {
         int line = 1;
         int column = 1;
-        try (InputStream in = new BufferedInputStream(Files.newInputStream(file))) {
-            for (int b = in.read(); b >= 0; b = in.read()) {
-                column = b == '\n' ? 1 : column + 1;
-                line += b == '\n' ? 1 : 0;
-            }
-        } catch (IOException e) {
-            return new int[] {SceneFileException.UNKNOWN, SceneFileException.UNKNOWN};
+        for (byte b : bytes) {
+            column = b == '\n' ? 1 : column + 1;
+            line += b == '\n' ? 1 : 0;
         }
         return new int[] {line, column};
+    }
+
+    /**
+     * A stream that keeps a copy of every byte read through it (skipped bytes too: the stream's own
+     * {@code skip} reads them).
+     */
+    private static final class CopyingStream extends InputStream {
+        private final InputStream in;
+        private final ByteArrayOutputStream copy;
+
+        CopyingStream(InputStream in, ByteArrayOutputStream copy) {
+            this.in = in;
+            this.copy = copy;
+        }
+
+        @Override
+        public int read() throws IOException {
+            int b = in.read();
+            if (b >= 0)
+                copy.write(b);
+            return b;
+        }
+
+        @Override
+        public int read(byte[] buffer, int offset, int length) throws IOException {
+            int n = in.read(buffer, offset, length);
+            if (n > 0)
+                copy.write(buffer, offset, n);
+            return n;
+        }
+
+        @Override
+        public void close() throws IOException {
+            in.close();
+        }
     }
 
     /**

@@ -13,11 +13,13 @@ import java.io.StringWriter;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Random;
 import java.util.regex.MatchResult;
 import java.util.regex.Matcher;
@@ -33,6 +35,8 @@ import picocli.CommandLine;
 
 import scenefile.ObjMesh;
 import testutil.TestFiles;
+
+import static testutil.TestAssertions.assertPrintable;
 
 /**
  * Tests for {@link RenderCommand}: the command runs in this process, its out and err writers captured;
@@ -711,6 +715,40 @@ class RenderCommandTest {
                 tc + ": no --help hint: " + result.err());
     }
 
+    /**
+     * Test method for input quoted in what the command prints: arguments, scene files and file names with
+     * control characters reach the terminal as visible escapes, never as commands.
+     */
+    @Test
+    void testControlCharactersQuoted() throws IOException {
+        Path folder = freshFolder("control");
+        String png = folder.resolve("out.png").toString();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an unknown option holding ESC ] 0 ; x BEL (an xterm title): "'--\x1B]0;x\x07'"
+        Result result = run(sceneFile.toString(), "-o", png, "--\u001b]0;x\u0007");
+        assertEquals(2, result.code(), "TC01: a bad argument should exit with 2");
+        assertOneLine(result, "TC01");
+        assertPrintable(result.err(), "'--\\x1B]0;x\\x07'", "TC01");
+        // TC02: an XML 1.1 scene file whose attribute holds ESC [ 2 J (clear the screen): "'\x1B[2J'"
+        Path scene = TestFiles.write(folder, "clear.xml", "<?xml version=\"1.1\"?>\n<scene><geometries><sphere"
+                + " center=\"0 0 0\" radius=\"&#x1B;[2J\"/></geometries></scene>");
+        assertBadScene("TC02", scene, ":2:", "got '\\x1B[2J'");
+        // TC03 (own): an image file whose name holds a C1 control (CSI): the report names it printably
+        result = run(sceneFile.toString(), "-o", folder.resolve("csi\u009b2J.png").toString(), "--width", "6");
+        assertEquals(0, result.code(), "TC03: the picture must be written: " + result.err());
+        assertPrintable(result.out(), "csi\\x9B2J.png", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a missing scene file whose name is a single ESC: "\x1B: no such scene file"
+        result = run(folder.resolve("\u001b").toString(), "-o", png);
+        assertEquals(2, result.code(), "TC11: a missing scene file should exit with 2");
+        assertPrintable(result.err(), "\\x1B: no such scene file", "TC11");
+        // TC12 (own): an image file name ending with a tab, of an unknown format: "out.gif\t"
+        result = run(sceneFile.toString(), "-o", folder.resolve("out.gif\t").toString());
+        assertEquals(2, result.code(), "TC12: a bad format should exit with 2");
+        assertPrintable(result.err(), "out.gif\\t must end with one of", "TC12");
+    }
+
     /** Test method for the limits of the options: too large a grid or picture is one line, exit code 2. */
     @Test
     void testLimits() {
@@ -870,8 +908,8 @@ class RenderCommandTest {
     }
 
     /**
-     * Test method for {@link Main}'s process: not enough memory for the picture, a German locale and a
-     * kill while rendering, each in a JVM of its own.
+     * Test method for {@link Main}'s process: not enough memory for the picture, a German locale, a scene
+     * from the standard input and a kill while rendering, each in a JVM of its own.
      */
     @Test
     void testSeparateProcess() throws IOException, InterruptedException {
@@ -886,6 +924,26 @@ class RenderCommandTest {
         process = java(folder, List.of("-Duser.language=de", "-Duser.country=DE"), german.toString(), "-o",
                 folder.resolve("german.png").toString());
         assertProcessFailure("TC02", process, "The end-tag for element type \"scene\" must end with a '>' delimiter");
+        // TC03: the scene read from /dev/stdin, a pipe (read once: a second reading found it empty before)
+        Path piped = folder.resolve("piped.png");
+        process = java(folder, List.of(), "/dev/stdin", "-o", piped.toString(), "--width", "12", "-q");
+        try (var stdin = process.getOutputStream()) {
+            stdin.write(Files.readAllBytes(sceneFile));
+        }
+        String err = new String(process.getErrorStream().readAllBytes());
+        assertEquals(0, process.waitFor(), "TC03: a scene from a pipe must render: " + err);
+        assertEquals(12, ImageIO.read(piped.toFile()).getWidth(), "TC03: the picture must be written");
+        // TC04: in the C locale, a scene file named with a non-ASCII letter: one line saying what to set
+        Map<String, String> cLocale = Map.of("LC_ALL", "C", "LANG", "C");
+        Path accented = Files.copy(sceneFile, folder.resolve("sc\u00e8ne.xml"), StandardCopyOption.REPLACE_EXISTING);
+        process = java(folder, cLocale, List.of(), accented.toString(), "-o", folder.resolve("c.png").toString());
+        String advice = "run with a UTF-8 locale, e.g. LC_ALL=C.UTF-8";
+        assertProcessFailure("TC04", process, "Invalid value for positional parameter at index 0 (SCENE.xml): the file"
+                + " name '" + folder + "/sc", advice);
+        // TC05 (own): ... and a scene file naming a mesh so: the mesh's element, and the locale to set
+        Path meshScene = TestFiles.write(folder, "meshC.xml", geometries("<mesh file=\"mod\u00e8le.obj\"/>"));
+        process = java(folder, cLocale, List.of(), meshScene.toString(), "-o", folder.resolve("c.png").toString());
+        assertProcessFailure("TC05", process, meshScene + ":3:", "<mesh>: the file name 'mod", advice);
 
         // ===== Boundary Values Tests =====
         // TC11: a render killed (SIGKILL) while running leaves the old picture whole
@@ -901,22 +959,34 @@ class RenderCommandTest {
 
     /** Starts {@link Main} in a JVM of its own, with these JVM options and arguments; its err is read later. */
     private static Process java(Path folder, List<String> options, String... args) throws IOException {
+        return java(folder, Map.of(), options, args);
+    }
+
+    /**
+     * Starts {@link Main} in a JVM of its own, with these environment variables (beside this JVM's), JVM
+     * options and arguments; its err is read later.
+     */
+    private static Process java(Path folder, Map<String, String> environment, List<String> options, String... args)
+            throws IOException {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.addAll(options);
         command.addAll(List.of("-cp", System.getProperty("java.class.path"), Main.class.getName()));
         command.addAll(List.of(args));
-        return new ProcessBuilder(command).redirectOutput(folder.resolve("out.txt").toFile()).start();
+        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(folder.resolve("out.txt").toFile());
+        builder.environment().putAll(environment);
+        return builder.start();
     }
 
-    private static void assertProcessFailure(String tc, Process process, String message) throws IOException,
+    private static void assertProcessFailure(String tc, Process process, String... messages) throws IOException,
             InterruptedException {
         String err = new String(process.getErrorStream().readAllBytes());
         assertEquals(2, process.waitFor(), tc + ": the process should exit with 2: " + err);
         Result result = new Result(2, "", err);
         assertEquals(1, result.errLines().size(), tc + ": not one line: " + err);
         assertNoStackTrace(result, tc);
-        assertTrue(err.contains(message), tc + ": wrong message: " + err);
+        for (String message : messages)
+            assertTrue(err.contains(message), tc + ": wrong message, without \"" + message + "\": " + err);
     }
 
     /**

@@ -116,6 +116,9 @@ class CylinderTest {
         assertEquals(new Vector(0, 0, -1), alongX.getNormal(new Point3D(1, 0, -1)), "TC04: wrong side normal");
         assertEquals(new Vector(-1, 0, 0), alongX.getNormal(new Point3D(0, 0.5, 0)), "TC04: wrong bottom normal");
         assertEquals(new Vector(1, 0, 0), alongX.getNormal(new Point3D(2, 0, 0.5)), "TC04: wrong top normal");
+        // TC05: a null point is refused, naming it
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> cylinder.getNormal(null),
+                "TC05: a null point must be refused"), "point must not be null", "TC05");
 
         // ===== Boundary Values Tests =====
         // TC10: the centre of the bottom cap (the axis ray's start) → (0, 0, −1)

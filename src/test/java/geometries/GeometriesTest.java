@@ -195,6 +195,51 @@ class GeometriesTest {
         assertEquals(3, g.getGeometries().size(), "TC14: adding nothing must not change the composite");
     }
 
+    /**
+     * Test method for {@link geometries.Geometries#add(geometries.Intersectable...)}: a composite that would
+     * contain itself is refused when it is added, not found by a stack overflow later.
+     */
+    @Test
+    void testAddCycles() {
+        String cycle = "it would contain itself";
+        Ray ray = new Ray(new Point3D(0, 0, -5), new Vector(0, 0, 1));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a composite added to itself
+        Geometries g = new Geometries(sphere);
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> g.add(g), "TC01: g.add(g) must be refused"),
+                "a Geometries cannot be added to itself", "TC01");
+        // TC02: a composite added to one it holds: b holds a, then a.add(b)
+        Geometries a = new Geometries(sphere);
+        Geometries b = new Geometries(a);
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> a.add(b), "TC02: a.add(b) must be refused"),
+                cycle, "TC02");
+        // TC03 (own): three levels, c holds b holds a: a.add(c) is refused, and with it a sphere of the same call
+        Geometries c = new Geometries(b);
+        assertThrows(IllegalArgumentException.class, () -> a.add(plane, c), "TC03: a.add(plane, c) must be refused");
+        assertEquals(List.of(sphere), a.getGeometries(), "TC03: nothing of a refused add may be added");
+        // TC04: after the refusals every query still ends: the ray meets the sphere twice through c
+        assertEquals(2, c.findIntersections(ray).size(), "TC04: wrong intersections");
+        assertEquals(3, c.version(), "TC04: wrong version: one addition to each of a, b and c");
+
+        // ===== Boundary Values Tests =====
+        // TC11: one composite held in two places (no cycle) is allowed: d holds a directly and through b
+        Geometries d = new Geometries(a, b);
+        assertEquals(4, d.findIntersections(ray).size(), "TC11: the sphere is met twice through each place");
+        // TC12: an empty composite added to itself is refused too
+        Geometries empty = new Geometries();
+        assertThrows(IllegalArgumentException.class, () -> empty.add(empty), "TC12: empty.add(empty) must be refused");
+        // TC13 (own): a chain of 100,000 composites is checked without a stack overflow, and its cycle refused
+        Geometries top = new Geometries();
+        Geometries bottom = top;
+        for (int k = 0; k < 100_000; ++k) {
+            Geometries next = new Geometries();
+            bottom.add(next);
+            bottom = next;
+        }
+        Geometries deepest = bottom;
+        assertThrows(IllegalArgumentException.class, () -> deepest.add(top), "TC13: the deep cycle must be refused");
+    }
+
     /** Test method for {@link geometries.Geometries#version()}. */
     @Test
     void testVersion() {

@@ -127,6 +127,9 @@ class PlaneTest {
         // TC02: a plane built from a point and a normal returns that normal, normalised
         Plane p = new Plane(new Point3D(0, 0, 1), new Vector(0, 3, 4));
         assertEquals(new Vector(0, 0.6, 0.8), p.getNormal(new Point3D(5, 0, 1)), "TC02: wrong normal");
+        // TC03: a null point is refused, naming it, although the normal is the same everywhere
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> p.getNormal(null),
+                "TC03: a null point must be refused"), "point must not be null", "TC03");
     }
 
     /**

@@ -161,6 +161,9 @@ class PolygonTest {
         // TC02: the normal is the same at every point and equals the plane's normal
         assertEquals(n, polygon.getNormal(new Point3D(0.25, 0.25, 0.5)), "TC02: normal differs across the polygon");
         assertEquals(n, polygon.getPlane().getNormal(), "TC02: normal differs from the plane's");
+        // TC03: a null point is refused, naming it
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> polygon.getNormal(null),
+                "TC03: a null point must be refused"), "point must not be null", "TC03");
     }
 
     /**

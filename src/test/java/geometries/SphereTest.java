@@ -128,6 +128,14 @@ class SphereTest {
         // TC03: the normal at the bottom of the sphere points down (outward)
         assertEquals(new Vector(0, -1, 0), sphere.getNormal(new Point3D(1, -1, 0)),
                 "TC03: normal at the bottom must point down");
+        // TC04: a null point is refused, naming it (not a NullPointerException)
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> sphere.getNormal(null),
+                "TC04: a null point must be refused"), "point must not be null", "TC04");
+
+        // ===== Boundary Values Tests =====
+        // TC11 (own): the centre (1,0,0) has no normal: refused as a zero vector
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> sphere.getNormal(new Point3D(1, 0, 0)),
+                "TC11: the centre must be refused"), "zero vector", "TC11");
     }
 
     /**

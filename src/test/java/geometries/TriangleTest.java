@@ -100,6 +100,9 @@ class TriangleTest {
         assertEquals(0, n.dotProduct(P1.subtract(P3)), 1e-10, "TC01: normal not orthogonal to edge P3P1");
         double s = 1 / Math.sqrt(3);
         assertTrue(n.equals(new Vector(s, s, s)) || n.equals(new Vector(-s, -s, -s)), "TC01: wrong normal " + n);
+        // TC02: a null point is refused, naming it
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> triangle.getNormal(null),
+                "TC02: a null point must be refused"), "point must not be null", "TC02");
     }
 
     /**

@@ -104,6 +104,9 @@ class TubeTest {
         Tube slanted3 = new Tube(new Ray(Point3D.ZERO, new Vector(1, 1, 0)), Math.sqrt(3));
         double s3 = 1 / Math.sqrt(3);
         assertEquals(new Vector(-s3, s3, s3), slanted3.getNormal(new Point3D(-3, -1, 1)), "TC04: wrong normal");
+        // TC05: a null point is refused, naming it
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> tube.getNormal(null),
+                "TC05: a null point must be refused"), "point must not be null", "TC05");
 
         // ===== Boundary Values Tests =====
         // TC10: the point's projection on the axis is the axis start p0 itself: (1,-1,0) → (0,-1,0)
@@ -113,6 +116,9 @@ class TubeTest {
         // TC11: the same on the slanted tube: (1,-1,0) − p0 is orthogonal to (1,1,0) → (1,-1,0)/√2
         assertEquals(new Vector(1 / SQRT2, -1 / SQRT2, 0), slanted.getNormal(new Point3D(1, -1, 0)),
                 "TC11: wrong normal");
+        // TC12 (own): a point on the axis has no normal: refused as a zero vector
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> tube.getNormal(new Point3D(1, 0, 7)),
+                "TC12: a point on the axis must be refused"), "zero vector", "TC12");
     }
 
     /**

@@ -83,6 +83,16 @@ class DirectionalLightTest {
                 "TC10: wrong l");
     }
 
+    /** Test method for {@link lighting.LightSource#isAt(primitives.Point3D)}, the default of a light at infinity. */
+    @Test
+    void testIsAt() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a light at infinity sits at no point: false at every point
+        DirectionalLight light = new DirectionalLight(new Color(1, 1, 1), new Vector(0, 0, -1));
+        for (Point3D p : POINTS)
+            assertFalse(light.isAt(p), "TC01: a directional light sits nowhere, not at " + p);
+    }
+
     /** Test method for {@link lighting.DirectionalLight#getDistance(primitives.Point3D)}. */
     @Test
     void testGetDistance() {

@@ -134,6 +134,28 @@ class PointLightTest {
         assertEquals(1, l.length(), DELTA, "TC11: l must be unit");
     }
 
+    /** Test method for {@link lighting.PointLight#isAt(primitives.Point3D)}. */
+    @Test
+    void testIsAt() {
+        PointLight light = new PointLight(I, POSITION);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the light's position (1, 2, 3): true, and getL refuses it
+        assertTrue(light.isAt(new Point3D(1, 2, 3)), "TC01: the light sits at its position");
+        // TC02: another point (4, 6, 3): false, and getL gives its direction
+        assertFalse(light.isAt(new Point3D(4, 6, 3)), "TC02: the light does not sit elsewhere");
+        // TC03: a null point is refused, naming it
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> light.isAt(null),
+                "TC03: a null point must be refused"), "lit point must not be null", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: 1e-11 off the position, within the points' tolerance: true, as getL refuses it
+        Point3D within = new Point3D(1, 2, 3 + 1e-11);
+        assertTrue(light.isAt(within), "TC11: a point within the tolerance is the position");
+        assertThrows(IllegalArgumentException.class, () -> light.getL(within), "TC11: getL must refuse it too");
+        // TC12: 1e-6 off the position: false, as getL gives (0, 0, 1) there
+        assertFalse(light.isAt(new Point3D(1, 2, 3 + 1e-6)), "TC12: a point 1e-6 away is not the position");
+    }
+
     /** Test method for {@link lighting.PointLight#getDistance(primitives.Point3D)}. */
     @Test
     void testGetDistance() {

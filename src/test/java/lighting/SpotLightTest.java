@@ -113,6 +113,10 @@ class SpotLightTest {
         // TC02: behind the light, l is still defined: (0, 0, 1), distance 10
         assertEquals(new Vector(0, 0, 1), spot.getL(new Point3D(0, 0, 10)), "TC02: wrong l behind");
         assertEquals(10, spot.getDistance(new Point3D(0, 0, 10)), DELTA, "TC02: wrong distance behind");
+        // TC03: at its own position the spot light sits (isAt), and l is refused
+        Point3D position = spot.getPosition();
+        assertTrue(spot.isAt(position), "TC03: the spot light sits at its position");
+        assertThrows(IllegalArgumentException.class, () -> spot.getL(position), "TC03: l must be refused there");
     }
 
     /** Test method for {@link lighting.SpotLight#setNarrowBeam(double)}. */

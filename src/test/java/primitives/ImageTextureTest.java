@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static testutil.TestAssertions.assertColor;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertPrintable;
 
 import java.nio.file.Path;
 
@@ -54,6 +55,14 @@ class ImageTextureTest {
         assertThrows(IllegalArgumentException.class, () -> new ImageTexture(null), "TC03: null file");
         assertMessage(assertThrows(IllegalArgumentException.class, () -> new ImageTexture(FOUR, -2),
                 "TC03: negative size"), "size", "TC03");
+        // TC04: a named pipe is refused without reading it (which could wait forever), naming the pipe
+        Path pipe = TestFiles.fifo(FOLDER.resolve("pipes"), "texture.png");
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> new ImageTexture(pipe),
+                "TC04: a pipe"), "pipe", "TC04");
+        // TC05: a file name with an escape character: the message quotes it printably, as \x1B
+        Path escaped = FOLDER.resolve("\u001B[2Jmissing.png");
+        assertPrintable(assertThrows(IllegalArgumentException.class, () -> new ImageTexture(escaped),
+                "TC05: a missing file with an escape in its name").getMessage(), "\\x1B[2J", "TC05");
         // ===== Boundary Values Tests =====
         // TC11: size 0 is refused; a 1 × 1 image is read
         assertThrows(IllegalArgumentException.class, () -> new ImageTexture(FOUR, 0), "TC11: size 0");

@@ -7,7 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
 
 import java.util.Set;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicIntegerArray;
 
 import org.junit.jupiter.api.Test;
@@ -65,5 +67,71 @@ class ParallelTest {
                 "thread name", "TC14");
         assertMessage(assertThrows(IllegalArgumentException.class, () -> Parallel.forEach(1, 1, "n", null)),
                 "task", "TC14");
+    }
+
+    /**
+     * Test method for {@link Parallel#forEach(int, int, String, java.util.function.IntConsumer)}: interrupting
+     * the calling thread stops the work and says so, its flag kept; complete work returns normally.
+     */
+    @Test
+    void testInterruption() {
+        Thread caller = Thread.currentThread();
+        try {
+            // ===== Equivalence Partitions Tests =====
+            // TC01: one thread, interrupted in task 3 of 100: tasks 0 to 3 ran, then a CancellationException
+            // saying "4 of 100", the flag still set
+            AtomicIntegerArray runs = new AtomicIntegerArray(100);
+            CancellationException e = assertThrows(CancellationException.class, () -> Parallel.forEach(100, 1, "one",
+                    t -> {
+                        runs.incrementAndGet(t);
+                        if (t == 3)
+                            caller.interrupt();
+                    }), "TC01: the interruption must be reported");
+            assertMessage(e, "interrupted: the one threads stopped after 4 of 100 tasks", "TC01");
+            for (int t = 0; t < 100; ++t)
+                assertEquals(t <= 3 ? 1 : 0, runs.get(t), "TC01: task " + t);
+            assertTrue(Thread.interrupted(), "TC01: the interrupt flag must stay set");
+            // TC02: three threads, a helper interrupting the caller in task 10 of 100,000: each thread ends its
+            // task under way and takes no more, far fewer than all run, every thread has stopped at the return
+            AtomicInteger ran = new AtomicInteger();
+            Set<Thread> workers = ConcurrentHashMap.newKeySet();
+            assertThrows(CancellationException.class, () -> Parallel.forEach(100_000, 3, "three", t -> {
+                workers.add(Thread.currentThread());
+                ran.incrementAndGet();
+                if (t == 10)
+                    caller.interrupt();
+            }), "TC02: the interruption must be reported");
+            assertTrue(ran.get() < 100_000, "TC02: the work must stop, " + ran.get() + " tasks ran");
+            assertTrue(workers.stream().noneMatch(w -> w != caller && w.isAlive()), "TC02: a helper is still running");
+            assertTrue(Thread.interrupted(), "TC02: the interrupt flag must stay set");
+            // TC03: the IllegalStateException it is: a caller catching the old contract still catches it
+            caller.interrupt();
+            assertThrows(IllegalStateException.class, () -> Parallel.forEach(5, 2, "old", t -> { }),
+                    "TC03: an interrupted call must throw an IllegalStateException");
+            assertTrue(Thread.interrupted(), "TC03: the interrupt flag must stay set");
+
+            // ===== Boundary Values Tests =====
+            // TC11: interrupted in the last task: the work is complete, so it returns normally, the flag set
+            AtomicInteger done = new AtomicInteger();
+            Parallel.forEach(10, 1, "last", t -> {
+                done.incrementAndGet();
+                if (t == 9)
+                    caller.interrupt();
+            });
+            assertEquals(10, done.get(), "TC11: every task must run");
+            assertTrue(Thread.interrupted(), "TC11: the interrupt flag must stay set");
+            // TC12: interrupted before the call: no task runs, "0 of 5"
+            caller.interrupt();
+            assertMessage(assertThrows(CancellationException.class, () -> Parallel.forEach(5, 1, "before",
+                    t -> { throw new AssertionError("TC12: no task may run"); }), "TC12: the interruption must be "
+                    + "reported"), "after 0 of 5 tasks", "TC12");
+            assertTrue(Thread.interrupted(), "TC12: the interrupt flag must stay set");
+            // TC13 (own): interrupted before a call of no task: nothing to stop, it returns normally, the flag set
+            caller.interrupt();
+            Parallel.forEach(0, 2, "nothing", t -> { });
+            assertTrue(Thread.interrupted(), "TC13: the interrupt flag must stay set");
+        } finally {
+            Thread.interrupted(); // the test thread goes on uninterrupted whatever failed
+        }
     }
 }

@@ -2,6 +2,7 @@ package renderer;
 
 import static org.junit.jupiter.api.Assertions.*;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertPrintable;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -70,6 +71,10 @@ class ImageWriterTest {
         e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("bad", 10, 10, null),
                 "TC05: null folder must be rejected");
         assertMessage(e, "folder", "TC05");
+        // TC06: a name no path can hold (NUL): refused, naming it printably and why
+        e = assertThrows(IllegalArgumentException.class, () -> new ImageWriter("a\0b", 2, 2, TEST_FOLDER),
+                "TC06: a NUL in the name must be rejected");
+        assertPrintable(e.getMessage(), "the file name 'a\\x00b.png' cannot be a path", "TC06");
 
         // ===== Boundary Values Tests =====
         // TC10: size 0 is rejected, the message names the "image size"
@@ -103,6 +108,31 @@ class ImageWriterTest {
         Path folder = TEST_FOLDER.resolve("nested").resolve("deeper");
         assertEquals(folder.resolve("scene A.png"), new ImageWriter("scene A", 10, 10, folder).getPath(),
                 "TC02: wrong path in a given folder");
+        // TC03: a name with ".." above the folder is refused, naming it and the folder: nothing is written outside
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new ImageWriter("../escaped", 10, 10, folder), "TC03: ../escaped must be refused");
+        assertMessage(e, "image name '../escaped' leads out of its folder " + folder, "TC03");
+        // TC04: an absolute name is refused, in the default folder too
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> new ImageWriter("/tmp/escaped", 10, 10),
+                "TC04: /tmp/escaped must be refused"), "leads out of its folder images", "TC04");
+        // TC05 (own): a name leading into a folder inside is kept: <folder>/sub/picture.png
+        assertEquals(folder.resolve("sub").resolve("picture.png"), new ImageWriter("sub/picture", 10, 10, folder)
+                .getPath(), "TC05: a folder inside must be allowed");
+
+        // ===== Boundary Values Tests =====
+        // TC11: ".." that climbs back into the folder stays inside: <folder>/sub/../picture.png
+        assertEquals(folder.resolve("sub/../picture.png"), new ImageWriter("sub/../picture", 10, 10, folder).getPath(),
+                "TC11: a name that stays inside must be kept");
+        // TC12: one level too far, sub/../../picture, is refused
+        assertThrows(IllegalArgumentException.class, () -> new ImageWriter("sub/../../picture", 10, 10, folder),
+                "TC12: sub/../../picture must be refused");
+        // TC13: the name ".." alone is the file "...png" in the folder, not its parent
+        assertEquals(folder.resolve("...png"), new ImageWriter("..", 10, 10, folder).getPath(),
+                "TC13: '..' must be the file ...png");
+        // TC14 (own): the current folder, given as "", holds a plain name but not "../x"
+        assertEquals(Path.of("x.png"), new ImageWriter("x", 1, 1, Path.of("")).getPath(), "TC14: wrong path in ''");
+        assertThrows(IllegalArgumentException.class, () -> new ImageWriter("../x", 1, 1, Path.of("")),
+                "TC14: ../x must be refused in ''");
     }
 
     /** Test method for {@link renderer.ImageWriter#writePixel(int, int, primitives.Color)} and {@link renderer.ImageWriter#getPixel(int, int)}. */
@@ -234,6 +264,10 @@ class ImageWriterTest {
                     "TC12: " + name + " must be refused");
         assertMessage(assertThrows(IllegalArgumentException.class, () -> ImageWriter.formatOf(null),
                 "TC12: a null file must be refused"), "image file", "TC12");
+        // TC13: a file name holding ESC [ 2 J, of an unknown format: named printably, "a\x1B[2J.gif"
+        assertPrintable(assertThrows(IllegalArgumentException.class,
+                () -> ImageWriter.formatOf(Path.of("a\u001b[2J.gif")), "TC13: .gif must be refused").getMessage(),
+                "a\\x1B[2J.gif must end with", "TC13");
     }
 
     /** Test method for {@link ImageWriter#copyTo(BufferedImage)}. */
@@ -273,6 +307,11 @@ class ImageWriterTest {
                     "TC01: an unwritable folder must fail");
             assertMessage(e, "cannot write image", "TC01");
             assertMessage(e, "blocked.png", "TC01");
+            // TC02: a name holding BEL, below the same file: the message names it printably, "bell\x07.png"
+            e = assertThrows(UncheckedIOException.class,
+                    () -> new ImageWriter("bell\u0007", 2, 2, blocker.resolve("sub")).writeToImage(),
+                    "TC02: an unwritable folder must fail");
+            assertPrintable(e.getMessage(), "bell\\x07.png: cannot write image", "TC02");
         } finally {
             deleteAll(blocker);
         }
@@ -339,6 +378,9 @@ class ImageWriterTest {
                     () -> new ImageWriter("picture", 2, 2, blocker.resolve("sub")).checkOutput(),
                     "TC04: a folder below a file must be rejected");
             assertMessage(e, blocker.resolve("sub").resolve("picture.png") + ": cannot write image", "TC04");
+            // TC05: a null path is refused as such, not with a NullPointerException
+            assertMessage(assertThrows(IllegalArgumentException.class, () -> ImageWriter.checkOutput(null),
+                    "TC05: a null path must be refused"), "image file must not be null", "TC05");
         } finally {
             deleteAll(blocker, folder.resolve("sub"), folder);
         }

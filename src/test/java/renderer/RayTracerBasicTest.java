@@ -31,6 +31,7 @@ import lighting.AmbientLight;
 import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
+import lighting.SpotLight;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point3D;
@@ -72,6 +73,9 @@ class RayTracerBasicTest {
         // TC02: a ray hitting the floor sees emission + ambient = (1+50, 2+25, 3+10)
         assertColor(new Color(51, 27, 13), tracer.traceRay(RAY_DOWN),
                 "TC02: with no lights the colour is emission plus ambient");
+        // TC03: a null ray is refused, naming it (not a NullPointerException)
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> tracer.traceRay(null),
+                "TC03: a null ray must be refused"), "ray to trace must not be null", "TC03");
     }
 
     /**
@@ -125,6 +129,14 @@ class RayTracerBasicTest {
         next.prepare(2);
         assertSame(built, next.accelerator(), "TC12: a new tracer over an unchanged scene must not build again");
         assertColor(red, next.traceRay(RAY_DOWN), "TC12: the new tracer sees the sphere");
+        // TC13: a null among the lights, put in through the public field: refused by the preparation (before
+        // any pixel of a render), naming the index
+        scene.lights = Arrays.asList(new DirectionalLight(red, DOWN), null);
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> next.prepare(2),
+                "TC13: a null light must be refused"), "scene.lights must not hold null (at index 1)", "TC13");
+        // TC14 (own): ... and by the first ray of a tracer no render prepared
+        assertThrows(IllegalArgumentException.class, () -> new RayTracerBasic(scene).traceRay(RAY_DOWN),
+                "TC14: a null light must be refused at the first ray");
     }
 
     /** Test method for {@link RayTracerBasic#traceRay(Ray)}: the Phong diffuse and specular terms. */
@@ -167,6 +179,70 @@ class RayTracerBasicTest {
         grazing.lights.add(new DirectionalLight(new Color(200, 100, 40), new Vector(1, 0, 0)));
         assertColor(Color.BLACK, new RayTracerBasic(grazing).traceRay(RAY_DOWN),
                 "TC12: a grazing light must not light the surface");
+    }
+
+    /**
+     * Test method for {@link RayTracerBasic#traceRay(Ray)}: points that coincide render. A light that sits
+     * at the lit point gives it nothing; a hit where the body has no normal is shaded as facing the ray.
+     */
+    @Test
+    void testTraceRayCoincidingPoints() {
+        Material diffuse = new Material().setKd(0.5);
+        Color emission = new Color(1, 2, 3);
+        DirectionalLight sun = new DirectionalLight(new Color(200, 100, 40), DOWN);
+        // the sun alone on the floor: emission + kD·1·I = (1+100, 2+50, 3+20)
+        Color sunLit = new Color(101, 52, 23);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a point light exactly on the floor at the hit: nothing from it, the sun's light as without it
+        Scene onPlane = new Scene("light on a plane");
+        onPlane.geometries.add(floor(diffuse, emission));
+        onPlane.lights.add(new PointLight(new Color(500, 500, 500), Point3D.ZERO));
+        onPlane.lights.add(sun);
+        assertColor(sunLit, new RayTracerBasic(onPlane).traceRay(RAY_DOWN), "TC01: the light on the point must add nothing");
+        // TC02: a spot light there, pointing up, with soft shadows from its square of edge 10: nothing from it
+        Scene spot = new Scene("spot on a plane");
+        spot.geometries.add(floor(diffuse, emission));
+        spot.lights.add(new SpotLight(new Color(500, 500, 500), Point3D.ZERO, new Vector(0, 0, 1)).setEdgesSize(10));
+        spot.lights.add(sun);
+        assertColor(sunLit, new RayTracerBasic(spot).setSoftShadows(true).traceRay(RAY_DOWN),
+                "TC02: the spot light on the point must add nothing");
+        // TC03: a point light on a sphere's surface, at the point the ray hits (its top, (0,0,10)): nothing from it
+        Scene onSphere = new Scene("light on a sphere");
+        onSphere.geometries.add(new Sphere(new Point3D(0, 0, 5), 5).setEmission(emission).setMaterial(diffuse));
+        onSphere.lights.add(new PointLight(new Color(500, 500, 500), new Point3D(0, 0, 10)));
+        onSphere.lights.add(sun);
+        assertColor(sunLit, new RayTracerBasic(onSphere).traceRay(RAY_DOWN), "TC03: the light on the sphere must add nothing");
+        // TC04: a sphere of radius 5e-5, 1e12 away: the hit rounds onto its centre, which has no normal; it is
+        // shaded as facing the ray, (0,0,1): the sun's light, as on a sphere of radius 1e-4 whose normal exists
+        Ray far = new Ray(Point3D.ZERO, new Vector(0, 0, -1));
+        Color[] seen = new Color[2];
+        double[] radii = {5e-5, 1e-4};
+        for (int k = 0; k < 2; ++k) {
+            Scene tiny = new Scene("tiny sphere");
+            Sphere sphere = new Sphere(new Point3D(0, 0, -1e12), radii[k]);
+            tiny.geometries.add(sphere.setEmission(emission).setMaterial(diffuse));
+            tiny.lights.add(new DirectionalLight(new Color(200, 100, 40), DOWN));
+            seen[k] = new RayTracerBasic(tiny).traceRay(far);
+        }
+        assertColor(sunLit, seen[0], "TC04: the hit on the centre must be shaded as facing the ray");
+        assertColor(seen[1], seen[0], "TC04: the same colour as a sphere whose hit has a normal");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a floor point 0.5 from the light sees it edge-on (n·l = 0): nothing either, as at the light itself
+        Ray beside = new Ray(new Point3D(0.5, 0, 100), DOWN);
+        assertColor(sunLit, new RayTracerBasic(onPlane).traceRay(beside), "TC11: the light edge-on must add nothing");
+        // TC12: a light 1e-11 above the hit (within the points' tolerance) counts as on it: nothing from it
+        Scene above = new Scene("light just above");
+        above.geometries.add(floor(diffuse, emission));
+        above.lights.add(new PointLight(new Color(500, 500, 500), new Point3D(0, 0, 1e-11)));
+        above.lights.add(sun);
+        assertColor(sunLit, new RayTracerBasic(above).traceRay(RAY_DOWN), "TC12: a light within tolerance adds nothing");
+        // TC13 (own): a light 0.001 above the hit is not on it: it lights the point, kD·I/kC = 0.5·500 more
+        Scene near = new Scene("light near");
+        near.geometries.add(floor(diffuse, emission));
+        near.lights.add(new PointLight(new Color(500, 500, 500), new Point3D(0, 0, 0.001)));
+        assertColor(new Color(251, 252, 253), new RayTracerBasic(near).traceRay(RAY_DOWN),
+                "TC13: a light just above the point must light it fully");
     }
 
     /**

@@ -15,6 +15,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.MissingResourceException;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.UnaryOperator;
 
@@ -303,6 +304,44 @@ class RenderTest {
                 "TC11: a negative thread count must be rejected");
     }
 
+    /**
+     * Test method for {@link Render#renderImage()}: points that coincide (a light on the surface, a hit on
+     * a sphere's centre through a large aperture) render to the end, as {@link RayTracerBasic} says.
+     */
+    @Test
+    void testCoincidingPointsRender() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a point light on the floor, where the ray of pixel (50, 50) meets it, (1, -1, 0): the picture is
+        // rendered, and that pixel gets nothing from the light, the ambient light's (50, 50, 50) alone; so does
+        // the floor around it, which sees the light edge-on
+        Scene scene = floorScene("light on the floor").setAmbientLight(new AmbientLight(new Color(50, 50, 50), 1));
+        scene.lights.add(new PointLight(new Color(500, 500, 500), new Point3D(1, -1, 0)));
+        Render render = render("lightOnFloor", scene);
+        assertEquals(new java.awt.Color(50, 50, 50), pixel(render, 50, 50), "TC01: the light on the point adds nothing");
+        assertEquals(new java.awt.Color(50, 50, 50), pixel(render, 60, 50), "TC01: the light edge-on adds nothing");
+        // TC02: a sphere of radius 5e-5, 1e12 away, seen through an aperture of 1000 focused on its centre: the
+        // hits round onto the centre; the picture is rendered, the sphere lit as facing the rays:
+        // emission (10, 20, 30) + kD 0.8 · (255, 255, 255) = (214, 224, 234)
+        Scene tiny = new Scene("tiny sphere");
+        tiny.geometries.add(new Sphere(new Point3D(0, 0, -1e12), 5e-5).setEmission(new Color(10, 20, 30))
+                .setMaterial(new Material().setKd(0.8)));
+        tiny.lights.add(new DirectionalLight(new Color(255, 255, 255), new Vector(0, 0, -1)));
+        Camera lens = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(1, 1)
+                .setVpDistance(1).setFocalDistance(1e12).setApertureSize(1000).setSqrtApertureRays(3);
+        Render aperture = new Render().setImageWriter(new ImageWriter("tinySphere", 3, 3, FOLDER)).setCamera(lens)
+                .setRayTracer(new RayTracerBasic(tiny)).setMultithreading(2);
+        aperture.renderImage();
+        assertEquals(new java.awt.Color(214, 224, 234), pixel(aperture, 1, 1), "TC02: wrong colour of the centre");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a spot light on the floor at that point with soft shadows, 5 x 5 beams: rendered, the pixel as in TC01
+        Scene spot = floorScene("spot on the floor").setAmbientLight(new AmbientLight(new Color(50, 50, 50), 1));
+        spot.lights.add(new SpotLight(new Color(500, 500, 500), new Point3D(1, -1, 0), new Vector(0, 0, 1))
+                .setEdgesSize(20));
+        Render soft = render("spotOnFloor", SIZE, new RayTracerBasic(spot).setSoftShadows(true).setSqrtBeamNum(5), 1, 2);
+        assertEquals(new java.awt.Color(50, 50, 50), pixel(soft, 50, 50), "TC11: the spot on the point adds nothing");
+    }
+
     /** Test method for {@link Render#renderImage()}, {@link Render#printGrid} and {@link Render#writeToImage()}. */
     @Test
     void testMissingPartsAndGrid() {
@@ -333,6 +372,19 @@ class RenderTest {
         assertEquals(java.awt.Color.BLACK, writer.getPixel(7, 7), "TC02: off the grid the pixel must not change");
         render.writeToImage();
         assertTrue(Files.exists(FOLDER.resolve("grid.png")), "TC02: the picture must be written");
+        // TC03: a null among the scene's lights (put in through the public field) stops the render before its
+        // first tile: an IllegalArgumentException naming it, no tile reported, no pixel rendered
+        Scene unlit = floorScene("null light");
+        unlit.lights = java.util.Arrays.asList(new DirectionalLight(new Color(100, 100, 100), new Vector(0, 0, -1)),
+                null);
+        AtomicInteger tiles = new AtomicInteger();
+        ImageWriter blank = new ImageWriter("nullLight", SIZE, SIZE, FOLDER);
+        Render refused = new Render().setImageWriter(blank).setCamera(topCamera()).setRayTracer(new RayTracerBasic(unlit))
+                .setProgressListener(done -> tiles.incrementAndGet());
+        assertMessage(assertThrows(IllegalArgumentException.class, refused::renderImage,
+                "TC03: a null light must stop the render"), "scene.lights must not hold null (at index 1)", "TC03");
+        assertEquals(0, tiles.get(), "TC03: no tile may be rendered");
+        assertEquals(java.awt.Color.BLACK, blank.getPixel(SIZE / 2, SIZE / 2), "TC03: no pixel may be rendered");
 
         // ===== Boundary Values Tests =====
         // TC11: a grid interval of 0 is rejected
@@ -438,8 +490,8 @@ class RenderTest {
 
     /** Asserts that two renders wrote the same picture, pixel for pixel. */
     private static void assertSamePicture(Render expected, Render actual, String message) {
-        for (int y = 0; y < AA_SIZE; ++y)
-            for (int x = 0; x < AA_SIZE; ++x)
+        for (int y = 0; y < expected.getImageWriter().getNy(); ++y)
+            for (int x = 0; x < expected.getImageWriter().getNx(); ++x)
                 assertEquals(pixel(expected, x, y), pixel(actual, x, y),
                         message + " at pixel (" + x + ", " + y + ")");
     }
@@ -698,6 +750,64 @@ class RenderTest {
                 .setRayTracer(new RayTracerBasic(scene)).setMultithreading(2).setProgressListener(one::add)
                 .renderImage();
         assertEquals(java.util.List.of(1L), one, "TC13: a 1 × 1 picture must report 1 pixel once");
+    }
+
+    /**
+     * Test method for {@link Render#renderImage()}: {@link Thread#interrupt()} of the rendering thread stops
+     * the render at once and says so, the flag kept; a picture that was complete is not reported interrupted.
+     */
+    @Test
+    void testInterruption() {
+        Thread caller = Thread.currentThread();
+        Scene scene = floorScene("interrupted");
+        scene.lights.add(new PointLight(new Color(300, 300, 300), new Point3D(0, 0, 100)));
+        // 100 × 100 pixels: 7 × 7 tiles of 16 × 16 (the last row and column 4 wide), 10,000 pixels
+        AtomicInteger tiles = new AtomicInteger();
+        try {
+            // ===== Equivalence Partitions Tests =====
+            // TC01: interrupted after the first tile, on 2 threads: a CancellationException, a tile or two more at
+            // the most (each thread ends its own), far from the 49, the flag still set
+            Render render = new Render().setImageWriter(new ImageWriter("interrupted", SIZE, SIZE, FOLDER))
+                    .setCamera(topCamera()).setRayTracer(new RayTracerBasic(scene)).setMultithreading(2)
+                    .setProgressListener(done -> {
+                        if (tiles.incrementAndGet() == 1)
+                            caller.interrupt();
+                    });
+            CancellationException e = assertThrows(CancellationException.class, render::renderImage,
+                    "TC01: the interrupted render must say so");
+            assertMessage(e, "interrupted: the render threads stopped after", "TC01");
+            assertTrue(tiles.get() <= 3, "TC01: the render must stop at once, " + tiles.get() + " tiles were done");
+            assertTrue(Thread.interrupted(), "TC01: the interrupt flag must stay set");
+            // TC02: the same render again, not interrupted: complete (every tile), the floor lit
+            tiles.set(0);
+            render.setProgressListener(done -> tiles.incrementAndGet()).renderImage();
+            assertEquals(49, tiles.get(), "TC02: every tile must be rendered");
+            assertTrue(brightness(render, 50, 50) > 100, "TC02: the floor must be lit");
+
+            // ===== Boundary Values Tests =====
+            // TC11: interrupted by the last tile: the picture is complete, so it is not reported interrupted
+            tiles.set(0);
+            Render last = new Render().setImageWriter(new ImageWriter("interruptedLast", SIZE, SIZE, FOLDER))
+                    .setCamera(topCamera()).setRayTracer(new RayTracerBasic(scene)).setMultithreading(2)
+                    .setProgressListener(done -> {
+                        if (done == (long) SIZE * SIZE)
+                            caller.interrupt();
+                    });
+            last.renderImage();
+            assertTrue(Thread.interrupted(), "TC11: the interrupt flag must stay set for the caller to see");
+            assertSamePicture(render, last, "TC11: the complete picture must be the whole one");
+            // TC12 (own): interrupted before the call, on 1 thread: no tile is rendered
+            tiles.set(0);
+            caller.interrupt();
+            Render before = new Render().setImageWriter(new ImageWriter("interruptedBefore", SIZE, SIZE, FOLDER))
+                    .setCamera(topCamera()).setRayTracer(new RayTracerBasic(scene)).setMultithreading(1)
+                    .setProgressListener(done -> tiles.incrementAndGet());
+            assertMessage(assertThrows(CancellationException.class, before::renderImage,
+                    "TC12: the interrupted render must say so"), "after 0 of 49 tasks", "TC12");
+            assertEquals(0, tiles.get(), "TC12: no tile may be rendered");
+        } finally {
+            Thread.interrupted(); // the test thread goes on uninterrupted whatever failed
+        }
     }
 
     /** Test method for {@link Render#getRayTracer()}. */

@@ -132,4 +132,83 @@ class SceneTest {
         // TC10: an empty list is accepted (0 lights)
         assertTrue(scene.setLights(new ArrayList<>()).lights.isEmpty(), "TC10: empty lights must be accepted");
     }
+
+    /**
+     * Test method for the scene's own list of lights, {@code scene.lights}: null is refused at the call that
+     * puts it in, not when the picture renders.
+     */
+    @Test
+    void testLightsList() {
+        Scene scene = new Scene("test");
+        LightSource point = new PointLight(new Color(100, 100, 100), new Point3D(0, 10, 0));
+        LightSource sun = new DirectionalLight(new Color(50, 50, 50), new Vector(0, -1, 0));
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the course's scene.lights.add(light), twice, then removed and inserted: [sun, point]
+        scene.lights.add(point);
+        scene.lights.add(sun);
+        scene.lights.remove(point);
+        scene.lights.add(1, point);
+        assertEquals(List.of(sun, point), scene.lights, "TC01: wrong lights");
+        // TC02: scene.lights.add(null) is refused at once, naming the list and the index 2
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> scene.lights.add(null),
+                "TC02: a null light must be refused");
+        assertMessage(e, "scene.lights must not hold null (at index 2)", "TC02");
+        // TC03: null by set, by addAll and through an iterator, each refused; the lights stay [sun, point]
+        assertThrows(IllegalArgumentException.class, () -> scene.lights.set(0, null), "TC03: set(0, null)");
+        assertThrows(IllegalArgumentException.class, () -> scene.lights.addAll(Arrays.asList(point, null)),
+                "TC03: addAll with a null");
+        assertThrows(IllegalArgumentException.class, () -> scene.lights.listIterator().add(null),
+                "TC03: an iterator's add(null)");
+        assertThrows(IllegalArgumentException.class, () -> scene.lights.replaceAll(light -> null),
+                "TC03: replaceAll to null");
+        assertEquals(List.of(sun, point), scene.lights, "TC03: nothing must be added, not even the light before the null");
+
+        // ===== Boundary Values Tests =====
+        // TC11: null at the front (index 0) of an empty list
+        scene.lights.clear();
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> scene.lights.add(0, null),
+                "TC11: add(0, null) must be refused"), "at index 0", "TC11");
+        assertTrue(scene.lights.isEmpty(), "TC11: nothing must be added");
+    }
+
+    /** Test method for {@link scene.Scene#requireComplete()}. */
+    @Test
+    void testRequireComplete() {
+        Scene scene = new Scene("test");
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a new scene is complete
+        scene.requireComplete();
+        // TC02: a list with a null light assigned to the field: refused, naming the index 1
+        LightSource sun = new DirectionalLight(new Color(50, 50, 50), new Vector(0, -1, 0));
+        scene.lights = Arrays.asList(sun, null);
+        assertMessage(assertThrows(IllegalArgumentException.class, scene::requireComplete,
+                "TC02: a null light must be refused"), "scene.lights must not hold null (at index 1)", "TC02");
+        // TC03: a list set with setLights that holds null later: refused too
+        List<LightSource> lights = new ArrayList<>();
+        scene.setLights(lights);
+        lights.add(null);
+        assertMessage(assertThrows(IllegalArgumentException.class, scene::requireComplete,
+                "TC03: a null light added later must be refused"), "at index 0", "TC03");
+        // TC04 (own): each public field set to null is named
+        scene.lights = null;
+        assertMessage(assertThrows(IllegalArgumentException.class, scene::requireComplete, "TC04: null lights"),
+                "scene.lights must not be null", "TC04");
+        scene.lights = List.of();
+        scene.geometries = null;
+        assertMessage(assertThrows(IllegalArgumentException.class, scene::requireComplete, "TC04: null geometries"),
+                "scene.geometries must not be null", "TC04");
+        scene.geometries = new Geometries();
+        scene.ambientLight = null;
+        assertMessage(assertThrows(IllegalArgumentException.class, scene::requireComplete, "TC04: null ambient"),
+                "scene.ambientLight must not be null", "TC04");
+        scene.ambientLight = new AmbientLight();
+        scene.background = null;
+        assertMessage(assertThrows(IllegalArgumentException.class, scene::requireComplete, "TC04: null background"),
+                "scene.background must not be null", "TC04");
+
+        // ===== Boundary Values Tests =====
+        // TC11: no lights at all (an empty list) is complete
+        scene.background = Color.BLACK;
+        scene.requireComplete();
+    }
 }

@@ -6,10 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestAssertions.assertPrintable;
 
 import java.io.IOException;
 import java.net.URISyntaxException;
 import java.net.URL;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -317,6 +319,17 @@ class ObjMeshTest {
         // TC14: null position
         assertBad(() -> ObjMesh.read(cube, 1, null), cube, "TC14", "position", "must not be null");
 
+        // TC15: a coordinate holding ESC ] 0 ; x BEL (an xterm title) is quoted printably: "0\x1B]0;x\x07y"
+        Path title = TestFiles.write(folder, "title.obj", "v 0 0 0\u001b]0;x\u0007y\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        assertPrintable(assertThrows(IllegalArgumentException.class, () -> ObjMesh.read(title), "TC15: bad number")
+                .getMessage(), "0\\x1B]0;x\\x07y", "TC15");
+        // TC16 (own): a face holding a C1 control (CSI, U+009B), and a file whose name holds ESC
+        Path csi = TestFiles.write(folder, "csi\u001b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \u009b2J\n");
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class, () -> ObjMesh.read(csi),
+                "TC16: bad face");
+        assertPrintable(bad.getMessage(), "\\x9B2J", "TC16");
+        assertPrintable(bad.getMessage(), "csi\\x1B.obj", "TC16");
+
         // ===== Boundary Values Tests =====
         // TC21: an empty file
         assertBadFile(resource("empty.obj"), "TC21", "has no triangles");
@@ -331,6 +344,45 @@ class ObjMeshTest {
         // TC24: a scale and a position whose sum overflows: vertex 2 (1,-1,-1) lands at x = infinity
         assertBad(() -> ObjMesh.read(cube, Double.MAX_VALUE, new Point3D(Double.MAX_VALUE, 0, 0)), cube, "TC24",
                 "bad OBJ file", "vertex 2", "finite");
+    }
+
+    /**
+     * Test method for {@link ObjMesh#readMesh(Path)}: the file is read as UTF-8 without a byte-order mark,
+     * and only a regular file is read: a pipe or a device is refused at once.
+     *
+     * @throws IOException when the test cannot read back its pipe
+     */
+    @Test
+    void testEncodingAndFileKinds() throws IOException {
+        String tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n";
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a UTF-8 byte-order mark before the first vertex: 4 vertices, not 3 ("face refers to vertex 4")
+        TriangleMesh bom = ObjMesh.readMesh(TestFiles.write(folder, "bom.obj", "\ufeff" + tetrahedron));
+        assertEquals(4, bom.getVerticesCount(), "TC01: the first vertex must be read");
+        // TC02: ... and the indices are not shifted: triangle 0 is (0,0,0) (1,0,0) (0,1,0), as without the mark
+        assertVertices(List.of(Point3D.ZERO, new Point3D(1, 0, 0), new Point3D(0, 1, 0)), bom.getTriangle(0), "TC02");
+        // TC03: names and comments in UTF-8 (Hebrew, accents, CJK) are read like any other text
+        Path names = TestFiles.write(folder, "names.obj", "# מודל: café\no 立方体\ng כ\u00e9\n" + tetrahedron);
+        assertEquals(2, ObjMesh.readMesh(names).getTrianglesCount(), "TC03: a UTF-8 file must be read");
+        // TC04: a named pipe (FIFO) is refused at once, naming it, not read (it would wait for a writer forever)
+        Path fifo = TestFiles.fifo(folder, "pipe.obj");
+        TestFiles.feed(fifo, tetrahedron); // a reader that opens the pipe would read a mesh: the test fails then
+        assertBadFile(fifo, "TC04", "bad OBJ file " + fifo, "not a regular file");
+        assertEquals(tetrahedron, new String(Files.readAllBytes(fifo), StandardCharsets.UTF_8),
+                "TC04: the pipe must not have been read");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a file of the byte-order mark alone has no triangles, like an empty one
+        assertBadFile(TestFiles.write(folder, "onlyBom.obj", "\ufeff"), "TC11", "has no triangles");
+        // TC12: only a mark at the start is dropped: a line that starts with one later is no vertex, 4 vertices
+        Path late = TestFiles.write(folder, "lateBom.obj", "# x\n\ufeffv 5 5 5\n" + tetrahedron);
+        assertEquals(4, ObjMesh.readMesh(late).getVerticesCount(), "TC12: the line after the start is not a vertex");
+        // TC13 (own): bytes that are not UTF-8 (ISO-8859-1 "é" in a comment) do not stop the reading
+        Path latin = folder.resolve("latin.obj");
+        Files.write(latin, ("# caf\u00e9\n" + tetrahedron).getBytes(StandardCharsets.ISO_8859_1));
+        assertEquals(2, ObjMesh.readMesh(latin).getTrianglesCount(), "TC13: a stray byte in a comment must be read");
+        // TC14 (own): a device, /dev/null, is refused as not a regular file (it is not an empty OBJ file)
+        assertBadFile(Path.of("/dev/null"), "TC14", "not a regular file");
     }
 
     /** Writes an OBJ file and asserts that reading it fails naming the file, this line and the problem. */

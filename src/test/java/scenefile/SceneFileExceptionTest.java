@@ -43,6 +43,10 @@ class SceneFileExceptionTest {
         assertEquals(FILE + ": bad", e.getMessage(), "TC03: wrong message without a line");
         assertEquals(-1, e.getLine(), "TC03: the line must be -1 (unknown)");
         assertEquals(5, e.getColumn(), "TC03: the column must be kept");
+        // TC04: a problem quoting ESC [ 2 J (clear the screen): "got '\x1B[2J'" in the message and the problem
+        e = new SceneFileException(FILE, 2, 9, "radius must be a number, got '\u001b[2J'", null);
+        assertEquals(FILE + ":2:9: radius must be a number, got '\\x1B[2J'", e.getMessage(), "TC04: wrong message");
+        assertEquals("radius must be a number, got '\\x1B[2J'", e.getProblem(), "TC04: wrong problem");
 
         // ===== Boundary Values Tests =====
         // TC11: line 1, column 1, the first place in a file: "scenes/a.xml:1:1: x"
@@ -80,5 +84,10 @@ class SceneFileExceptionTest {
                 "TC11: wrong message for a file without a folder");
         // TC12: a null cause is kept as null
         assertNull(new SceneFileException(FILE, "x", null).getCause(), "TC12: the cause must be null");
+        // TC13 (own): a file whose name ends with BEL: named printably, "b.xml\x07: x"; the path is kept as it is
+        Path bell = Path.of("b.xml\u0007");
+        e = new SceneFileException(bell, "x", null);
+        assertEquals("b.xml\\x07: x", e.getMessage(), "TC13: the file's name must be printable");
+        assertSame(bell, e.getFile(), "TC13: the file must be kept");
     }
 }

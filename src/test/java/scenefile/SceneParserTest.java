@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.TestAssertions.assertColor;
+import static testutil.TestAssertions.assertPrintable;
 
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -28,6 +29,8 @@ import primitives.Point3D;
  */
 class SceneParserTest {
     private static final Path FOLDER = Path.of("target", "test-scenes", "parser");
+    /** Where the named pipes go: apart from the files, whose names they would take. */
+    private static final Path PIPES = FOLDER.resolve("pipes");
 
     /** The lines of a small valid scene file. */
     private static final List<String> TINY = List.of(
@@ -383,6 +386,84 @@ class SceneParserTest {
         e = assertThrows(SceneFileException.class, () -> SceneParser.parse(zero), "TC13: width 0");
         assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'", e.getProblem(),
                 "TC13: wrong problem");
+    }
+
+    /**
+     * Test method for {@link SceneParser#parse(Path)}: the file is read once, so a named pipe (as a shell's
+     * {@code <(cat scene.xml)} or {@code /dev/stdin} gives) is read like a file.
+     */
+    @Test
+    void testReadOnce() {
+        String tiny = String.join("\n", TINY);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the tiny scene through a pipe: the same tree as from a file, its 3 bodies and 1 light
+        Path pipe = TestFiles.fifo(PIPES, "pipe.xml");
+        TestFiles.feed(pipe, tiny);
+        SceneElement root = SceneParser.parse(pipe);
+        assertEquals("tiny", root.text("name"), "TC01: wrong scene name");
+        assertEquals(3, root.child("geometries").children().size(), "TC01: the bodies must be read");
+        assertEquals(1, root.child("lights").children().size(), "TC01: the light must be read");
+        // TC02: a scene the schema refuses, through a pipe: the schema's message with its place, not an end of file
+        Path refused = TestFiles.fifo(PIPES, "refused.xml");
+        TestFiles.feed(refused, "<scene>\n<image width=\"0\"/>\n</scene>\n");
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(refused),
+                "TC02: width 0 must be refused");
+        assertEquals("attribute 'width' of <image> must be a whole number, 1 or more, got '0'", e.getProblem(),
+                "TC02: wrong problem");
+        assertEquals(2, e.getLine(), "TC02: wrong line");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a pipe cut inside the XML declaration: the place is the end of what it gave (line 1, column 6)
+        Path cut = TestFiles.fifo(PIPES, "cut.xml");
+        TestFiles.feed(cut, "<?xml");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(cut), "TC11: a cut pipe");
+        assertEquals(cut + ":1:6: Premature end of file.", e.getMessage(), "TC11: wrong message");
+        // TC12 (own): an empty pipe: a premature end at line 1, column 1
+        Path empty = TestFiles.fifo(PIPES, "empty.xml");
+        TestFiles.feed(empty, "");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(empty), "TC12: an empty pipe");
+        assertEquals(empty + ":1:1: Premature end of file.", e.getMessage(), "TC12: wrong message");
+        // TC13 (own): the last line of a file cut after two lines: the place is line 3, column 1
+        Path twoLines = file("twoLines.xml", "<scene>\n<geometries>\n");
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(twoLines), "TC13: a cut file");
+        assertEquals(3, e.getLine(), "TC13: wrong line");
+        assertEquals(1, e.getColumn(), "TC13: wrong column");
+    }
+
+    /**
+     * Test method for {@link SceneParser#parse(Path)}: text the messages quote from a file (and the file's
+     * name) reaches no terminal as commands: control characters are visible escapes.
+     */
+    @Test
+    void testControlCharactersQuoted() {
+        String sphere = "<scene><geometries><sphere center=\"0 0 0\" radius=\"%s\"/></geometries></scene>";
+        // ===== Equivalence Partitions Tests =====
+        // TC01: an XML 1.1 attribute holding ESC ] 0 ; pwned BEL (sets an xterm's title): "got '\x1B]0;pwned\x07'"
+        Path title = file("title.xml", "<?xml version=\"1.1\"?>\n" + sphere.formatted("&#x1B;]0;pwned&#x7;"));
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneParser.parse(title),
+                "TC01: a bad number must be reported");
+        assertEquals("attribute 'radius' of <sphere> must be a number, got '\\x1B]0;pwned\\x07'", e.getProblem(),
+                "TC01: wrong problem");
+        assertPrintable(e.getMessage(), "\\x1B]0;pwned\\x07", "TC01");
+        // TC02: a C1 control, CSI (U+009B), clears the screen on some terminals: "\x9B2J"
+        Path csi = file("csi.xml", "<?xml version=\"1.1\"?>\n" + sphere.formatted("&#x9B;2J"));
+        assertPrintable(assertThrows(SceneFileException.class, () -> SceneParser.parse(csi), "TC02: a bad number")
+                .getMessage(), "got '\\x9B2J'", "TC02");
+        // TC03 (own): a file whose name holds ESC [ 2 J: the message names it printably
+        Path named = file("clear\u001b[2J.xml", "<scene>\n");
+        assertPrintable(assertThrows(SceneFileException.class, () -> SceneParser.parse(named), "TC03: broken XML")
+                .getMessage(), "clear\\x1B[2J.xml:", "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the first control character, NUL, cannot be in XML at all, and BEL (U+0007), the last one a title
+        // needs, can only in XML 1.1: in 1.0 it is refused as the parser's message, which quotes no input
+        Path bell = file("bell.xml", sphere.formatted("&#x7;"));
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(bell), "TC11: BEL in XML 1.0");
+        assertPrintable(e.getMessage(), "invalid XML character", "TC11");
+        // TC12 (own): a tab and a line feed as character references stay on the one line: "\t" and "\n"
+        Path blanks = file("blanks.xml", sphere.formatted("x&#9;y&#10;z"));
+        e = assertThrows(SceneFileException.class, () -> SceneParser.parse(blanks), "TC12: a bad number");
+        assertPrintable(e.getMessage(), "'x\\ty\\nz'", "TC12");
     }
 
     /**

@@ -44,6 +44,22 @@ public final class TestAssertions {
     }
 
     /**
+     * Asserts that a text shown to a user holds no control character (C0, DEL or C1) that a terminal
+     * could run as a command, but for the line ends of its lines, and that it quotes the input printably:
+     * with a given escape in it.
+     *
+     * @param text   the text: a message, or what a command printed
+     * @param escape the visible escape it must hold, such as {@code \x1B}
+     * @param tc     the test-case label, named in the failure message
+     */
+    public static void assertPrintable(String text, String escape, String tc) {
+        assertNotNull(text, tc + ": no text");
+        assertTrue(text.chars().noneMatch(c -> c < 0x20 && c != '\n' && c != '\r' || c >= 0x7F && c <= 0x9F),
+                tc + ": a control character must not reach the terminal: " + text.replaceAll("[\\x00-\\x1F\\x7F-\\x9F]", "?"));
+        assertTrue(text.contains(escape), tc + ": the input must be quoted as \"" + escape + "\", got: " + text);
+    }
+
+    /**
      * Asserts that two calls, one through each of two names for the same thing, are both rejected
      * with an {@link IllegalArgumentException} carrying the same message.
      *
