@@ -78,7 +78,7 @@ public final class BoundingVolumeHierarchy {
         this.nodes = new BvhNodes(builder);
         this.bodies = new LeafBodies(infinite.toArray(new Geometry[0]), generic.toArray(new Intersectable[0]),
                 packed, builder, threads);
-        this.blockers = new ClosedMeshBlockers(owners, packed, threads);
+        this.blockers = new ClosedMeshBlockers(owners, packed, threads, nodes.largestExtent());
         this.closestHitWalk = new ClosestHitWalk(nodes, bodies);
         this.transmittanceWalk = new TransmittanceWalk(nodes, bodies);
         this.bundleGather = new BundleGather(nodes, bodies, blockers, transmittanceWalk, tree);

@@ -42,6 +42,11 @@ final class BvhNodes {
         return ray.boxEntry(bounds, 6 * node, maxT);
     }
 
+    /** {@return the largest extent of the root's box, 0 for a tree without nodes} */
+    double largestExtent() {
+        return count == 0 ? 0 : Math.max(bounds[3] - bounds[0], Math.max(bounds[4] - bounds[1], bounds[5] - bounds[2]));
+    }
+
     /**
      * Copies a box from doubles into floats, each bound rounded outward, so the box in floats holds
      * the one in doubles.
