@@ -4,7 +4,7 @@ import accel.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
 import geometries.Triangle;
 import geometries.TriangleMesh;
-import geometries.TriangleMesh.MeshPoint;
+import geometries.MeshPoint;
 import lighting.AreaLightSource;
 import lighting.LightSource;
 import primitives.Color;

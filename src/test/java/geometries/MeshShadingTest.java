@@ -17,7 +17,6 @@ import org.junit.jupiter.api.Test;
 
 import benchmark.SphereMesh;
 import geometries.Intersectable.GeoPoint;
-import geometries.TriangleMesh.MeshPoint;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
 import primitives.Color;

@@ -31,7 +31,6 @@ import org.junit.jupiter.api.function.Executable;
 import accel.Query;
 import accel.RayState;
 import geometries.Intersectable.GeoPoint;
-import geometries.TriangleMesh.MeshPoint;
 import lighting.PointLight;
 import primitives.Color;
 import primitives.Material;
