@@ -131,14 +131,7 @@ final class MeshShading {
     double[] uv(int t, double[] weights) {
         if (uvs == null)
             throw new UnsupportedOperationException(mesh + " has no UVs");
-        double u = 0;
-        double v = 0;
-        for (int k = 0; k < 3; ++k) {
-            int c = 2 * indices[3 * t + k];
-            u += weights[k] * uvs[c];
-            v += weights[k] * uvs[c + 1];
-        }
-        return new double[] { u, v };
+        return new double[] { mixed(uvs, 2, 0, t, weights), mixed(uvs, 2, 1, t, weights) };
     }
 
     /**
@@ -218,17 +211,29 @@ final class MeshShading {
      * @return the unit normal
      */
     Vector normal(int t, double[] weights) {
-        double x = 0;
-        double y = 0;
-        double z = 0;
-        for (int k = 0; k < 3; ++k) {
-            int n = 3 * indices[3 * t + k];
-            x += weights[k] * normals[n];
-            y += weights[k] * normals[n + 1];
-            z += weights[k] * normals[n + 2];
-        }
+        double x = mixed(normals, 3, 0, t, weights);
+        double y = mixed(normals, 3, 1, t, weights);
+        double z = mixed(normals, 3, 2, t, weights);
         double length = Math.sqrt(x * x + y * y + z * z);
         return length > NO_DIRECTION ? new Vector(x / length, y / length, z / length) : mesh.getNormal(t);
+    }
+
+    /**
+     * One number of a per-vertex attribute at a point of a triangle: the triangle's vertices' values
+     * mixed by the point's barycentric weights.
+     *
+     * @param values  the attribute, {@code width} numbers per vertex
+     * @param width   how many numbers a vertex has
+     * @param number  which of them
+     * @param t       the triangle
+     * @param weights the weights of its three vertices at the point
+     * @return the mixed number
+     */
+    private double mixed(double[] values, int width, int number, int t, double[] weights) {
+        double sum = 0;
+        for (int k = 0; k < 3; ++k)
+            sum += weights[k] * values[width * indices[3 * t + k] + number];
+        return sum;
     }
 
     /**

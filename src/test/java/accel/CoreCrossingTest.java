@@ -160,7 +160,7 @@ class CoreCrossingTest {
         // TC01: 300 random pyramids, a quarter of them thin, the others 1e-4 to 1 thick (log-uniform),
         // × 8 balls (the inner balls of cubes) centred near the axis at λ −0.1 to 1.1, of radii about
         // the section's reach there (0.7 to 1.5 times, plus up to twice the thickness)
-        int[] counts = forRandomCores(20261203, (rnd, bundle, corner) -> {
+        int[] counts = forRandomCores(20261203, (rnd, frustum, bundle, corner) -> {
             double[] p = bundle.pyramid();
             double lambda = 1.2 * rnd.nextDouble() - 0.1;
             double half = Math.max(1e-3, lambda * corner * (0.7 + 0.8 * rnd.nextDouble())
@@ -171,7 +171,7 @@ class CoreCrossingTest {
             Point3D at = new Point3D(centre[0], centre[1], centre[2]);
             InnerBall ball = InnerBallTest.cubeBall(at, half);
             double[] box = boxAround(at, half);
-            if (!crosses(bundle.frustum(), ball, box))
+            if (!crosses(frustum, ball, box))
                 return false;
             String pyramid = "pyramid " + Arrays.toString(p) + " thickness " + bundle.thickness() + ", ball at "
                     + at + " radius " + ball.radius;
@@ -191,18 +191,7 @@ class CoreCrossingTest {
 
     /** A check of a core near a random bundle's axis; {@return whether the bundle crosses the core} */
     private interface CoreCheck {
-        boolean check(Random rnd, BundleFrustum bundle, double corner);
-    }
-
-    /**
-     * A random bundle and its frustum, set to it.
-     *
-     * @param frustum   the frustum
-     * @param pyramid   the pyramid {apex, c, a, b}
-     * @param thickness its thickness
-     * @param segments  segments its rays may cover, {start, end} each
-     */
-    private record BundleFrustum(ShadowFrustum frustum, double[] pyramid, double thickness, double[][] segments) {
+        boolean check(Random rnd, ShadowFrustum frustum, RandomBundle bundle, double corner);
     }
 
     /**
@@ -221,9 +210,8 @@ class CoreCrossingTest {
             double[] p = bundle.pyramid();
             double corner = Math.max(Math.sqrt(squared(p[6] + p[9], p[7] + p[10], p[8] + p[11])),
                     Math.sqrt(squared(p[6] - p[9], p[7] - p[10], p[8] - p[11])));
-            BundleFrustum set = new BundleFrustum(frustum, p, bundle.thickness(), bundle.segments());
             for (int b = 0; b < 8; ++b)
-                ++counts[check.check(rnd, set, corner) ? 0 : 1];
+                ++counts[check.check(rnd, frustum, bundle, corner) ? 0 : 1];
         }
         return counts;
     }
@@ -364,7 +352,7 @@ class CoreCrossingTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: 300 random pyramids × 8 boxes centred near the axis at λ −0.1 to 1.1, of half-sides
         // about the section's reach there, some of them long along the axis
-        int[] counts = forRandomCores(20261204, (rnd, bundle, corner) -> {
+        int[] counts = forRandomCores(20261204, (rnd, frustum, bundle, corner) -> {
             double[] p = bundle.pyramid();
             double lambda = 1.2 * rnd.nextDouble() - 0.1;
             double[] box = new double[6];
@@ -375,7 +363,7 @@ class CoreCrossingTest {
                 box[k] = centre - half;
                 box[3 + k] = centre + half;
             }
-            if (!crossesBox(bundle.frustum(), box))
+            if (!crossesBox(frustum, box))
                 return false;
             for (double[] e : bundle.segments())
                 assertThroughBox(box, e, "pyramid " + Arrays.toString(p) + " thickness " + bundle.thickness()
