@@ -57,6 +57,8 @@ public final class BoundingVolumeHierarchy {
     private final TransmittanceWalk transmittanceWalk;
     private final BundleGather bundleGather;
     private final PacketWalk packetWalk;
+    /** The query of each thread for instances of the hierarchy's body ({@link #threadQuery}). */
+    private final ThreadLocal<Query> threadQueries = ThreadLocal.withInitial(this::newQuery);
 
     private BoundingVolumeHierarchy(Intersectable scene, boolean tree, int threads) {
         if (threads < 1)
@@ -141,7 +143,7 @@ public final class BoundingVolumeHierarchy {
 
     /** {@return the version of a composite's contents (0 for a single body, which never changes)} */
     private static long versionOf(Intersectable geometries) {
-        return geometries instanceof Geometries composite ? composite.version() : 0;
+        return geometries.version();
     }
 
     /** {@return a fresh scratch space for queries on this hierarchy} */
@@ -176,9 +178,91 @@ public final class BoundingVolumeHierarchy {
         Vector dir = ray.getDir();
         RayState state = query.ray.set(p0.getX(), p0.getY(), p0.getZ(), dir.getX(), dir.getY(), dir.getZ(),
                 Geometry.NO_HIT);
+        return closestHit(ray, query, state);
+    }
+
+    /** The nearest intersection of a ray whose numbers are in the query's ray, up to its distance. */
+    private GeoPoint closestHit(Ray ray, Query query, RayState state) {
         closestHitWalk.closestHit(query, state);
         GeoPoint nearest = state.geometry == null ? null : bodies.hitPoint(ray, state);
         return bodies.nearestOfOthers(ray, nearest);
+    }
+
+    // The queries of an instance of the hierarchy's body (see geometries.Instance): a ray given in
+    // the world is mapped into the body's space by the instance's inverse, and the body's tree is
+    // walked there with this thread's query. Distances scale by the mapped direction's length.
+
+    /**
+     * This thread's scratch space for queries on this hierarchy, made on its first call: the one the
+     * {@link geometries.Instance}s of the hierarchy's body share on this thread. Safe while no body
+     * holds itself (a {@link Geometries} refuses such a cycle): an instance's walk never enters the
+     * walk of its own body again.
+     *
+     * @return the query
+     */
+    public Query threadQuery() {
+        return threadQueries.get();
+    }
+
+    /**
+     * The box around all the hierarchy's bodies, the way an instance finds its own.
+     *
+     * @param box where the six numbers go: {minX, minY, minZ, maxX, maxY, maxZ}
+     * @return false, with nothing written, when a body is unbounded (or not a {@link Geometry}) or there is none
+     */
+    public boolean bounds(double[] box) {
+        if (nodes.count == 0 || bodies.unbounded.length > 0 || bodies.others.length > 0)
+            return false;
+        for (int k = 0; k < 6; ++k)
+            box[k] = nodes.bounds[k];
+        return true;
+    }
+
+    /**
+     * The distance to the nearest intersection of a ray given in another space, within its distance.
+     *
+     * @param ray   the ray, in the space the map comes from (an instance's world)
+     * @param toBody the map into the bodies' space, 12 numbers (see {@link primitives.Transform#toArray})
+     * @return the distance along the given ray, or {@link Geometry#NO_HIT}
+     */
+    public double nearestHit(RayState ray, double[] toBody) {
+        Query query = threadQuery();
+        RayState mapped = query.ray;
+        double scale = mapped.setMapped(ray, toBody);
+        closestHitWalk.closestHit(query, mapped);
+        double t = Math.min(mapped.geometry == null ? Geometry.NO_HIT : mapped.maxT, bodies.nearestOfOthers(mapped));
+        return t == Geometry.NO_HIT ? t : t / scale;
+    }
+
+    /**
+     * The nearest intersection of a ray given in another space, in the bodies' space.
+     *
+     * @param ray    the ray, in the space the map comes from (an instance's world); its distance is ignored
+     * @param toBody the map into the bodies' space, 12 numbers (see {@link primitives.Transform#toArray})
+     * @return the intersection, its point in the bodies' space, or null
+     */
+    public GeoPoint closestHit(RayState ray, double[] toBody) {
+        Query query = threadQuery();
+        RayState mapped = query.ray;
+        mapped.setMapped(ray, toBody);
+        mapped.maxT = Geometry.NO_HIT;
+        return closestHit(mapped.toRay(), query, mapped);
+    }
+
+    /**
+     * The share of light that passes the bodies along a ray given in another space, within its
+     * distance: the product of the {@code kT} of every intersection, each body's own. The running
+     * product of the given ray (its transmittance so far and its limit) sets where the walk may stop.
+     *
+     * @param ray    the ray, in the space the map comes from (an instance's world)
+     * @param toBody the map into the bodies' space, 12 numbers (see {@link primitives.Transform#toArray})
+     * @return the transparency in [0, 1]: 0 also when, times the given ray's, it falls below the ray's limit
+     */
+    public double transmittance(RayState ray, double[] toBody) {
+        Query query = threadQuery();
+        RayState mapped = query.ray;
+        mapped.setMapped(ray, toBody);
+        return transmittanceWalk.transmittance(query, mapped, ray.ktr > 0 ? ray.minK / ray.ktr : 0);
     }
 
     /**

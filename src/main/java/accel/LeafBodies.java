@@ -8,9 +8,7 @@ import geometries.TriangleMesh;
 import java.util.ArrayList;
 import java.util.List;
 
-import primitives.Point3D;
 import primitives.Ray;
-import primitives.Vector;
 
 /**
  * The bodies the hierarchy tests: those of the tree's leaves, in leaf order, each held by reference
@@ -183,6 +181,26 @@ final class LeafBodies {
         return nearest;
     }
 
+    /**
+     * The distance to the nearest hit of the intersectables that are not geometries, within a ray's distance.
+     *
+     * @param ray the ray
+     * @return the distance, or {@link Geometry#NO_HIT}
+     */
+    double nearestOfOthers(RayState ray) {
+        double nearest = Geometry.NO_HIT;
+        if (others.length == 0)
+            return nearest;
+        Ray course = ray.toRay();
+        for (Intersectable other : others) {
+            List<GeoPoint> hits = other.findGeoIntersections(course, ray.maxT);
+            if (hits != null)
+                for (GeoPoint hit : hits)
+                    nearest = Math.min(nearest, hit.point.distance(course.getP0()));
+        }
+        return nearest;
+    }
+
     private static GeoPoint nearer(Ray ray, GeoPoint nearest, List<GeoPoint> candidates) {
         if (candidates == null)
             return nearest;
@@ -203,7 +221,7 @@ final class LeafBodies {
     double throughOthers(RayState ray, double ktr) {
         if (others.length == 0)
             return ktr;
-        Ray shadow = new Ray(new Point3D(ray.ox, ray.oy, ray.oz), new Vector(ray.dx, ray.dy, ray.dz));
+        Ray shadow = ray.toRay();
         for (Intersectable other : others) {
             List<GeoPoint> hits = other.findGeoIntersections(shadow, ray.maxT);
             if (hits != null)

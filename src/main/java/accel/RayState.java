@@ -2,6 +2,10 @@ package accel;
 
 import geometries.Geometry;
 
+import primitives.Point3D;
+import primitives.Ray;
+import primitives.Vector;
+
 /**
  * One ray's numbers for a walk of the hierarchy: its origin, unit direction, the direction's inverse
  * and sign bits (set by {@link #invert}, for the slab test), the distance that counts, and the running
@@ -55,6 +59,11 @@ public final class RayState {
         this.dz = dz;
         this.maxT = maxT;
         return this;
+    }
+
+    /** {@return the ray as the course's {@link Ray}} */
+    Ray toRay() {
+        return new Ray(new Point3D(ox, oy, oz), new Vector(dx, dy, dz));
     }
 
     /** {@return the origin, x} */
@@ -176,10 +185,39 @@ public final class RayState {
         return attenuate(body.transmittance(this));
     }
 
-    /** Starts a closest-hit query: nothing hit yet, up to {@link Geometry#NO_HIT}. */
+    /** Starts a closest-hit query: nothing hit yet, up to the ray's distance ({@link Geometry#NO_HIT} for any hit). */
     void startClosestHit() {
-        maxT = Geometry.NO_HIT;
         geometry = null;
+    }
+
+    /**
+     * Sets this ray as another seen in the space of an affine map (an instance's body's, from the
+     * world), its distance carried along: the origin mapped, the direction mapped and normalised. A
+     * distance t along the other ray is then t · scale along this one.
+     *
+     * @param ray the ray to map
+     * @param m   the map's 12 numbers, row-major 3 × 4 (see {@link primitives.Transform#toArray})
+     * @return the scale: the length of the mapped direction
+     */
+    double setMapped(RayState ray, double[] m) {
+        double x = ray.ox;
+        double y = ray.oy;
+        double z = ray.oz;
+        ox = m[0] * x + m[1] * y + m[2] * z + m[3];
+        oy = m[4] * x + m[5] * y + m[6] * z + m[7];
+        oz = m[8] * x + m[9] * y + m[10] * z + m[11];
+        x = ray.dx;
+        y = ray.dy;
+        z = ray.dz;
+        double lx = m[0] * x + m[1] * y + m[2] * z;
+        double ly = m[4] * x + m[5] * y + m[6] * z;
+        double lz = m[8] * x + m[9] * y + m[10] * z;
+        double scale = Math.sqrt(lx * lx + ly * ly + lz * lz);
+        dx = lx / scale;
+        dy = ly / scale;
+        dz = lz / scale;
+        maxT = ray.maxT * scale;
+        return scale;
     }
 
     /** Keeps a body (and its part, or −1) hit at distance t when it is nearer than the nearest so far. */

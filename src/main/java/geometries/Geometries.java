@@ -8,7 +8,6 @@ import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Set;
 
-import accel.BoundingVolumeHierarchy;
 import primitives.Ray;
 
 /**
@@ -18,12 +17,13 @@ import primitives.Ray;
  */
 public class Geometries extends Intersectable {
     private final List<Intersectable> items = new ArrayList<>();
-    /** The composites among the items, which {@link #version()} walks. */
-    private final List<Geometries> composites = new ArrayList<>();
+    /**
+     * The items that hold other objects, composites and {@link Instance}s, which {@link #version()}
+     * and the cycle check walk.
+     */
+    private final List<Intersectable> holders = new ArrayList<>();
     /** How many times objects were added to this composite itself. */
     private long additions;
-    /** The renderer's hierarchy over the bodies, as they were when it was built (see {@link #hierarchy}). */
-    private BoundingVolumeHierarchy hierarchy;
 
     /**
      * Creates a composite holding the given objects.
@@ -40,8 +40,9 @@ public class Geometries extends Intersectable {
      * @param geometries the objects to add
      * @return this composite
      * @throws IllegalArgumentException when the array or an object is null, or an object is this composite
-     *                                  or a composite that holds it, directly or inside another: the
-     *                                  composite would contain itself, and every walk of it would not end
+     *                                  or one that holds it (a composite or an {@link Instance}), directly
+     *                                  or inside another: the composite would contain itself, and every
+     *                                  walk of it would not end
      */
     public Geometries add(Intersectable... geometries) {
         if (geometries == null)
@@ -49,65 +50,59 @@ public class Geometries extends Intersectable {
         for (Intersectable geometry : geometries) {
             if (geometry == null)
                 throw new IllegalArgumentException("a geometry to add is null");
-            if (geometry instanceof Geometries composite && composite.reaches(this))
-                throw new IllegalArgumentException("a Geometries cannot be added to itself, nor to a Geometries it"
-                        + " holds (directly or inside another): it would contain itself");
+            if (reaches(geometry, this))
+                throw new IllegalArgumentException("a Geometries cannot be added to itself, nor to a Geometries or"
+                        + " an Instance it holds (directly or inside another): it would contain itself");
         }
         Collections.addAll(items, geometries);
         for (Intersectable geometry : geometries)
-            if (geometry instanceof Geometries composite)
-                composites.add(composite);
+            if (isHolder(geometry))
+                holders.add(geometry);
         ++additions;
         return this;
     }
 
+    /** {@return whether an object holds others: a composite, or an instance} */
+    private static boolean isHolder(Intersectable item) {
+        return item instanceof Geometries || item instanceof Instance;
+    }
+
     /**
-     * Whether a composite is this one or among those it holds, at any depth: a walk with a stack of its
-     * own (a deep nesting overflows no call stack) that visits each composite once (one held in many
-     * places is not walked again).
+     * Whether a composite is an object or among those it holds, at any depth, an instance's body
+     * among them: a walk with a stack of its own (a deep nesting overflows no call stack) that visits
+     * each holder once (one held in many places is not walked again).
      */
-    private boolean reaches(Geometries target) {
-        Deque<Geometries> open = new ArrayDeque<>(List.of(this));
-        Set<Geometries> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+    private static boolean reaches(Intersectable start, Geometries target) {
+        Deque<Intersectable> open = new ArrayDeque<>(List.of(start));
+        Set<Intersectable> seen = Collections.newSetFromMap(new IdentityHashMap<>());
         while (!open.isEmpty()) {
-            Geometries composite = open.pop();
-            if (composite == target)
+            Intersectable holder = open.pop();
+            if (holder == target)
                 return true;
-            if (seen.add(composite))
-                open.addAll(composite.composites);
+            if (seen.add(holder)) {
+                if (holder instanceof Geometries composite)
+                    open.addAll(composite.holders);
+                else if (holder instanceof Instance instance && isHolder(instance.getBody()))
+                    open.push(instance.getBody());
+            }
         }
         return false;
     }
 
     /**
      * A number that grows whenever an object is added to this composite or to any composite nested
-     * in it: the sum of their counts of additions (composites are never taken out, so the sum only
-     * grows). A hierarchy built over the composite compares it to know whether it is out of date.
+     * in it, inside an {@link Instance} too: the sum of their counts of additions (composites are
+     * never taken out, so the sum only grows). A hierarchy built over the composite compares it to
+     * know whether it is out of date.
      *
      * @return the version of the composite's contents
      */
+    @Override
     public long version() {
         long version = additions;
-        for (Geometries composite : composites)
-            version += composite.version();
+        for (Intersectable holder : holders)
+            version += holder.version();
         return version;
-    }
-
-    /**
-     * The renderer's bounding volume hierarchy over the bodies, kept with them so that every ray
-     * tracer of the scene shares it (a course test makes a new tracer for every picture): built on
-     * the first call, and again only when bodies were added since (see {@link #version()}).
-     *
-     * @param threads how many threads may share a build, 1 or more
-     * @return the hierarchy over the bodies as they are now
-     * @throws IllegalArgumentException when threads is below 1
-     */
-    public synchronized BoundingVolumeHierarchy hierarchy(int threads) {
-        if (threads < 1)
-            throw new IllegalArgumentException("threads must be 1 or more, got " + threads);
-        if (hierarchy == null || !hierarchy.isBuiltFrom(this))
-            hierarchy = BoundingVolumeHierarchy.build(this, threads);
-        return hierarchy;
     }
 
     /** {@return the objects held, as an unmodifiable list} */

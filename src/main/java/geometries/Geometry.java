@@ -230,12 +230,13 @@ public abstract class Geometry extends Intersectable {
 
     /**
      * The share of light that passes this body along a ray, within its distance: {@code kT} to the
-     * power of the number of intersections.
+     * power of the number of intersections ({@link Instance} multiplies the {@code kT} of its body's
+     * intersections instead, each body's own).
      *
      * @param ray the ray
      * @return the transparency factor in [0, 1]
      */
-    public final double transmittance(RayState ray) {
+    public double transmittance(RayState ray) {
         if (nearestHit(ray) == NO_HIT) // most shadow rays miss: no material read
             return 1;
         double kT = material.getKt();

@@ -2,6 +2,7 @@ package geometries;
 
 import java.util.List;
 
+import accel.BoundingVolumeHierarchy;
 import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
@@ -13,9 +14,39 @@ import static primitives.Util.requireNonNull;
  * course's tests assert exactly that. Only points strictly ahead of the ray's start (t &gt; 0) count.
  */
 public abstract class Intersectable {
+    /** The hierarchy over the object's bodies, as they were when it was built (see {@link #hierarchy}). */
+    private BoundingVolumeHierarchy hierarchy;
 
     /** Creates an intersectable object. */
     protected Intersectable() {
+    }
+
+    /**
+     * A number that grows whenever a body is added inside the object; a hierarchy built over the
+     * object compares it to know whether it is out of date. A single body never changes: 0.
+     *
+     * @return the version of the object's contents
+     */
+    public long version() {
+        return 0;
+    }
+
+    /**
+     * The bounding volume hierarchy over the object's bodies, kept with them so that every ray tracer
+     * of a scene and every {@link Instance} of a body share one (a course test makes a new tracer for
+     * every picture; a thousand instances of a mesh walk one tree): built on the first call, and again
+     * only when bodies were added since (see {@link #version()}).
+     *
+     * @param threads how many threads may share a build, 1 or more
+     * @return the hierarchy over the bodies as they are now
+     * @throws IllegalArgumentException when threads is below 1
+     */
+    public synchronized BoundingVolumeHierarchy hierarchy(int threads) {
+        if (threads < 1)
+            throw new IllegalArgumentException("threads must be 1 or more, got " + threads);
+        if (hierarchy == null || !hierarchy.isBuiltFrom(this))
+            hierarchy = BoundingVolumeHierarchy.build(this, threads);
+        return hierarchy;
     }
 
     /**
@@ -69,6 +100,16 @@ public abstract class Intersectable {
          */
         public Point3D getShadowPoint(Vector l) {
             return point;
+        }
+
+        /**
+         * The normal of the flat face under a smooth surface at the point, which tells which side of the
+         * face a ray comes from: on a smooth {@link TriangleMesh}, the normal of the triangle hit.
+         *
+         * @return the face's unit normal, or null where the surface is its own face (its normal tells the side)
+         */
+        public Vector getFaceNormal() {
+            return null;
         }
 
         /** Equal when they name the same geometry object and equal points. */

@@ -43,6 +43,13 @@ public final class MeshPoint extends GeoPoint {
         return mesh.isSmooth() ? mesh.shading().shadowPoint(triangle, weights(), point, l) : point;
     }
 
+    /** {@return on a smooth mesh the unit normal of the triangle hit, else null} */
+    @Override
+    public Vector getFaceNormal() {
+        TriangleMesh mesh = (TriangleMesh) geometry;
+        return mesh.isSmooth() ? mesh.getNormal(triangle) : null;
+    }
+
     /** {@return the UVs of the triangle's vertices mixed by the point's barycentric weights} */
     @Override
     public double[] getUV() {

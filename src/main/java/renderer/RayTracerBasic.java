@@ -4,7 +4,6 @@ import accel.BoundingVolumeHierarchy;
 import geometries.Intersectable.GeoPoint;
 import geometries.Triangle;
 import geometries.TriangleMesh;
-import geometries.MeshPoint;
 import lighting.AreaLightSource;
 import lighting.LightSource;
 import primitives.Color;
@@ -214,13 +213,13 @@ public class RayTracerBasic extends RayTracerBase {
 
     /**
      * The normal that tells which side of the surface a ray comes from: n, except on a smooth mesh
-     * where the smooth normal n and the triangle's disagree about it (or n runs along the ray): the
-     * triangle's.
+     * (or an instance of one) where the smooth normal n and the triangle's disagree about it (or n
+     * runs along the ray): the triangle's ({@link GeoPoint#getFaceNormal}).
      */
     private static Vector sideNormal(GeoPoint geoPoint, Vector n, Vector v) {
-        if (geoPoint instanceof MeshPoint hit && hit.geometry instanceof TriangleMesh mesh && mesh.isSmooth()) {
+        Vector flat = geoPoint.getFaceNormal();
+        if (flat != null) {
             double nv = alignZero(n.dotProduct(v));
-            Vector flat = mesh.getNormal(hit.triangle);
             if (alignZero(flat.dotProduct(v)) * nv < 0 || nv == 0)
                 return flat;
         }

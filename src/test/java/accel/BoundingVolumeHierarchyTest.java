@@ -21,6 +21,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 import geometries.Cylinder;
+import geometries.Geometry;
 import geometries.Geometries;
 import geometries.Intersectable.GeoPoint;
 import geometries.Intersectable;
@@ -30,7 +31,11 @@ import geometries.Triangle;
 import geometries.Tube;
 import primitives.Point3D;
 import primitives.Ray;
+import primitives.Transform;
 import primitives.Vector;
+import testutil.TestBundles;
+import testutil.TestInstances;
+import testutil.TestRandom;
 import testutil.TestScenes.TestScene;
 
 /**
@@ -213,5 +218,131 @@ class BoundingVolumeHierarchyTest {
         assertMessage(assertThrows(IllegalArgumentException.class,
                 () -> BoundingVolumeHierarchy.build(new Geometries(), 0), "TC12: 0 threads must throw"),
                 "threads", "TC12");
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#closestHit(Ray, Query)} and
+     * {@link BoundingVolumeHierarchy#transmittance(Query, double)} through instances: the answers of the
+     * scene built in place ({@link TestInstances#scene}).
+     */
+    @Test
+    void testInstancesClosestHitAndTransmittance() {
+        Random rnd = new Random(28);
+        TestInstances.InstanceScene scene = TestInstances.scene(rnd);
+        BoundingVolumeHierarchy instanced = BoundingVolumeHierarchy.build(scene.instanced(), 2);
+        BoundingVolumeHierarchy inPlace = BoundingVolumeHierarchy.build(scene.inPlace());
+        Query query = instanced.newQuery();
+        Query copyQuery = inPlace.newQuery();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: each instance is one body of the outer tree (4 + 1 + 1 + 1 + 48 instances and 5 spheres: 60)
+        assertEquals(60, instanced.getBoundedCount(), "TC01: an instance must be one body of the tree");
+        // TC02: 2000 random rays: the closest hit of the copy (point, normal and material)
+        for (int i = 0; i < 2000; ++i) {
+            Ray ray = TestInstances.randomRay(rnd);
+            TestInstances.assertSameHit(inPlace.closestHit(ray, copyQuery), instanced.closestHit(ray, query),
+                    "TC02: ray " + i + " " + ray);
+        }
+        // TC03: 2000 random rays to random distances: the copy's transmittance, with the cut-off and without
+        for (int i = 0; i < 2000; ++i) {
+            Ray ray = TestInstances.randomRay(rnd);
+            double maxT = 80 * rnd.nextDouble() + 1e-3;
+            for (double minK : new double[] { MIN_K, 0 })
+                assertEquals(transmittance(inPlace, ray, maxT, minK, copyQuery),
+                        transmittance(instanced, ray, maxT, minK, query), TestInstances.DELTA,
+                        "TC03: ray " + i + " " + ray + " to " + maxT + " (minK " + minK + ")");
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: rays that start inside the bodies' boxes (and inside the bodies): the copy's answers
+        for (int i = 0; i < 1000; ++i) {
+            Point3D start = TestRandom.randomPoint(rnd, Point3D.ZERO, 10);
+            Ray ray = new Ray(start, TestRandom.randomUnit(rnd));
+            TestInstances.assertSameHit(inPlace.closestHit(ray, copyQuery), instanced.closestHit(ray, query),
+                    "TC11: ray " + i + " " + ray);
+            assertEquals(transmittance(inPlace, ray, 30, 0, copyQuery), transmittance(instanced, ray, 30, 0, query),
+                    TestInstances.DELTA, "TC11: transmittance of ray " + i + " " + ray);
+        }
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gather(Query)},
+     * {@link BoundingVolumeHierarchy#bundleRayTransmittance(Query, double)} and
+     * {@link BoundingVolumeHierarchy#packetTransmittances(Query, double)} through instances: each ray of a
+     * bundle gets the transmittance the scene built in place gives it alone.
+     */
+    @Test
+    void testInstancesBundles() {
+        Random rnd = new Random(280);
+        TestInstances.InstanceScene scene = TestInstances.scene(rnd);
+        BoundingVolumeHierarchy instanced = BoundingVolumeHierarchy.build(scene.instanced());
+        BoundingVolumeHierarchy inPlace = BoundingVolumeHierarchy.build(scene.inPlace());
+        Query query = instanced.newQuery();
+        Query copyQuery = inPlace.newQuery();
+        int subtrees = 0;
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 300 bundles from random points toward the light's square over the crowd of instances, 16
+        // rays each: one by one after the gather, and as a packet, the copy's transmittance of each ray
+        for (int bundle = 0; bundle < 300; ++bundle) {
+            Point3D apex = TestRandom.randomPoint(rnd, new Point3D(0, 0, 0), 8);
+            List<Double> distances = new java.util.ArrayList<>();
+            List<Ray> rays = TestInstances.raysToLight(rnd, apex, 16, distances);
+            if (!TestBundles.gather(instanced, query, apex, TestInstances.LIGHT, TestInstances.LIGHT_A,
+                    TestInstances.LIGHT_B))
+                continue;
+            if (query.isSubtreeGathered())
+                ++subtrees;
+            for (int r = 0; r < rays.size(); ++r)
+                assertEquals(transmittance(inPlace, rays.get(r), distances.get(r), MIN_K, copyQuery),
+                        TestBundles.gathered(instanced, rays.get(r), distances.get(r), MIN_K, query),
+                        TestInstances.DELTA, "TC01: bundle " + bundle + " ray " + r + " " + rays.get(r));
+            int number = bundle;
+            TestBundles.assertPacket(instanced, query, inPlace, copyQuery, rays, distances, TestInstances.DELTA,
+                    () -> "TC01: bundle " + number);
+        }
+
+        // ===== Boundary Values Tests =====
+        // TC11: some bundles meet more instances than a gather keeps one by one: their packets walk a subtree
+        assertTrue(subtrees > 0, "TC11: no bundle kept a subtree of instances");
+    }
+
+    /**
+     * Test method for the queries of an instance's body: {@link BoundingVolumeHierarchy#threadQuery()},
+     * {@link BoundingVolumeHierarchy#bounds(double[])} and
+     * {@link BoundingVolumeHierarchy#nearestHit(RayState, double[])}.
+     */
+    @Test
+    void testInstanceQueries() throws InterruptedException {
+        Sphere sphere = new Sphere(Point3D.ZERO, 1);
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(sphere);
+        // into the body's space: x halved, then moved by -5 along x (the world's sphere: x in [8, 12])
+        double[] toBody = Transform.translate(new Vector(-10, 0, 0)).then(Transform.scale(0.5, 1, 1)).toArray();
+        RayState ray = new RayState().set(0, 0, 0, 1, 0, 0, Geometry.NO_HIT);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a ray along x from the origin meets the stretched sphere at x = 8 (distance 8)
+        assertEquals(8, bvh.nearestHit(ray, toBody), 1e-12, "TC01: wrong distance through the map");
+        // TC02: the body's box: the sphere's, padded a little
+        double[] box = new double[6];
+        assertTrue(bvh.bounds(box), "TC02: a sphere is bounded");
+        assertEquals(-1, box[0], 1e-6, "TC02: wrong box");
+        assertEquals(1, box[5], 1e-6, "TC02: wrong box");
+        // TC03: one query per thread: the same on one thread, another on another thread
+        assertSame(bvh.threadQuery(), bvh.threadQuery(), "TC03: a thread must keep its query");
+        Query[] other = new Query[1];
+        Thread thread = new Thread(() -> other[0] = bvh.threadQuery());
+        thread.start();
+        thread.join();
+        assertNotNull(other[0], "TC03: another thread must get a query");
+        assertFalse(other[0] == bvh.threadQuery(), "TC03: another thread must get its own query");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the hit beyond the ray's distance (7.9): none
+        assertEquals(Geometry.NO_HIT, bvh.nearestHit(ray.set(0, 0, 0, 1, 0, 0, 7.9), toBody), "TC11: hit beyond maxT");
+        // TC12: an unbounded body and an empty composite have no box (false)
+        assertFalse(BoundingVolumeHierarchy.build(new Plane(Point3D.ZERO, new Vector(0, 0, 1))).bounds(box),
+                "TC12: a plane has no box");
+        assertFalse(BoundingVolumeHierarchy.build(new Geometries()).bounds(box), "TC12: nothing has no box");
     }
 }
