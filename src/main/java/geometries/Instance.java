@@ -73,7 +73,7 @@ public final class Instance extends Geometry {
      * The body's hierarchy as the body is now: the one it keeps, shared by its instances. Asked of the
      * body again only when bodies were added to it since.
      */
-    private BoundingVolumeHierarchy tree() {
+    BoundingVolumeHierarchy tree() {
         BoundingVolumeHierarchy current = tree;
         if (current == null || !current.isBuiltFrom(body))
             tree = current = body.hierarchy(1);

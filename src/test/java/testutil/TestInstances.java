@@ -53,11 +53,12 @@ public final class TestInstances {
             .then(Transform.translate(new Vector(2, 3, -1)));
 
     /**
-     * A mesh built in place: the triangles of a mesh over its vertices moved by a transform.
+     * A mesh built in place: the triangles of a mesh over its vertices moved by a transform, its
+     * vertex normals (when it has them) turned as normals are, its UVs and texture the same.
      *
      * @param mesh      the mesh
      * @param transform the transform
-     * @return the moved mesh, with the mesh's material
+     * @return the moved mesh, with the mesh's material and emission
      */
     public static TriangleMesh inPlace(TriangleMesh mesh, Transform transform) {
         double[] vertices = new double[3 * mesh.getVerticesCount()];
@@ -71,7 +72,23 @@ public final class TestInstances {
         for (int t = 0; t < mesh.getTrianglesCount(); ++t)
             for (int k = 0; k < 3; ++k)
                 indices[3 * t + k] = mesh.getVertexIndex(t, k);
-        return (TriangleMesh) new TriangleMesh(vertices, indices).setMaterial(mesh.getMaterial());
+        TriangleMesh copy = (TriangleMesh) new TriangleMesh(vertices, indices).setMaterial(mesh.getMaterial())
+                .setEmission(mesh.getEmission());
+        double[] normals = mesh.getNormals();
+        if (normals != null) {
+            for (int v = 0; v < normals.length; v += 3) {
+                Vector n = transform.applyToNormal(new Vector(normals[v], normals[v + 1], normals[v + 2]));
+                normals[v] = n.getX();
+                normals[v + 1] = n.getY();
+                normals[v + 2] = n.getZ();
+            }
+            copy.setNormals(normals);
+        }
+        if (mesh.getUVs() != null)
+            copy.setUVs(mesh.getUVs());
+        if (mesh.getTexture() != null)
+            copy.setTexture(mesh.getTexture());
+        return copy;
     }
 
     /**
@@ -79,12 +96,12 @@ public final class TestInstances {
      *
      * @param sphere     the sphere
      * @param similarity a transform that scales all directions alike
-     * @return the moved sphere, with the sphere's material
+     * @return the moved sphere, with the sphere's material and emission
      */
     public static Sphere inPlace(Sphere sphere, Transform similarity) {
         double scale = similarity.applyToVector(new Vector(1, 0, 0)).length();
         return (Sphere) new Sphere(similarity.apply(sphere.getCenter()), sphere.getRadius() * scale)
-                .setMaterial(sphere.getMaterial());
+                .setMaterial(sphere.getMaterial()).setEmission(sphere.getEmission());
     }
 
     /**
