@@ -4,10 +4,12 @@ import java.nio.file.Path;
 import java.util.List;
 
 import geometries.Geometries;
+import geometries.Instance;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
 import lighting.LightSource;
@@ -18,6 +20,7 @@ import primitives.Color;
 import primitives.ImageTexture;
 import primitives.Material;
 import primitives.Point3D;
+import primitives.Transform;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.ImageWriter;
@@ -71,7 +74,8 @@ public final class Gallery {
                 adaptiveSuperSampling(),
                 spotSmoothFlat(),
                 glassSphereChecker(),
-                fresnelPane());
+                fresnelPane(),
+                instancedMeshes());
     }
 
     /**
@@ -412,6 +416,31 @@ public final class Gallery {
         Camera camera = new Camera(new Point3D(60, 30, 300), new Vector(-0.5, -0.1, -1), new Vector(-0.04, 1, -0.08))
                 .setVpSize(240, 160).setVpDistance(300);
         return new Picture("fresnelPane", 600, 400, scene, camera);
+    }
+
+    /**
+     * Instances: Spot read once and placed five times by transforms (turned, scaled, one squashed),
+     * every instance walking the one hierarchy the mesh keeps.
+     */
+    private static Picture instancedMeshes() {
+        Scene scene = new Scene("instances of one mesh").setBackground(new Color(30, 36, 52))
+                .setAmbientLight(new AmbientLight(WHITE, 0.08));
+        TriangleMesh spot = ObjMesh.readMesh(SPOT.resolve("spot_triangulated.obj"), 1, Point3D.ZERO,
+                ObjMesh.Normals.SMOOTH);
+        spot.setEmission(new Color(40, 40, 40)).setMaterial(new Material().setKd(0.75).setKs(0.15).setShininess(30))
+                .setTexture(new ImageTexture(SPOT.resolve("spot_texture.png")));
+        double feet = spot.bounds()[1];
+        double[][] placements = { // scale x, y, z, turn about y, then x and z on the floor
+                { 24, 24, 24, 35, -62, 10 }, { 32, 32, 32, -25, 8, -60 }, { 17, 17, 17, 160, 58, 40 },
+                { 28, 16, 28, 90, -8, 62 }, { 48, 48, 48, -65, 95, -190 } };
+        for (double[] p : placements)
+            scene.geometries.add(new Instance(spot, Transform.scale(p[0], p[1], p[2]).then(Transform.rotateY(p[3]))
+                    .then(Transform.translate(new Vector(p[4], -40 - feet * p[1], p[5])))));
+        scene.geometries.add(chequeredFloor(-40));
+        scene.lights.add(new PointLight(new Color(600, 580, 540), new Point3D(-150, 250, 200)).setKl(0.0008));
+        Camera camera = new Camera(new Point3D(0, 60, 330), new Vector(0, -0.2, -1), new Vector(0, 1, -0.2))
+                .setVpSize(180, 120).setVpDistance(330);
+        return new Picture("instancedMeshes", 600, 400, scene, camera);
     }
 
     /** A floor of light and dark squares of 20, a checkerboard texture on a plane at height y. */

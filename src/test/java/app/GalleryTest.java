@@ -30,6 +30,8 @@ import scenefile.SceneLoader;
  */
 class GalleryTest {
     private static final Path FOLDER = Path.of("target", "test-images", "gallery");
+    /** The pictures whose scenes a scene file cannot express yet: instances wait for {@code <instance>} (issue 28, item 4). */
+    private static final Set<String> WITHOUT_SCENE_FILE = Set.of("instancedMeshes");
 
     private static BufferedImage reportImage(String name) throws IOException {
         try (InputStream in = GalleryTest.class.getResourceAsStream("/report/" + name)) {
@@ -68,8 +70,8 @@ class GalleryTest {
     void testEveryPictureRenders() {
         List<Picture> pictures = Gallery.pictures();
         // ===== Equivalence Partitions Tests =====
-        // TC01: 23 pictures, each written as a PNG that shows more than one colour
-        assertEquals(23, pictures.size(), "TC01: wrong number of gallery pictures");
+        // TC01: 24 pictures, each written as a PNG that shows more than one colour
+        assertEquals(24, pictures.size(), "TC01: wrong number of gallery pictures");
         for (Picture picture : pictures) {
             ImageWriter image = Gallery.render(picture, FOLDER).getImageWriter();
             assertTrue(Files.exists(FOLDER.resolve(picture.name() + ".png")), "TC01: " + picture.name() + " not written");
@@ -178,8 +180,11 @@ class GalleryTest {
     void testSceneFilesMatchPictures() throws IOException {
         Path quarterFolder = Path.of("target", "test-images", "gallery-files");
         // ===== Equivalence Partitions Tests =====
-        // TC01: for each of the 23 pictures, the scene file exists and loads into the same picture
+        // TC01: for each of the 23 pictures a scene file can express, the scene file exists and loads into
+        // the same picture
         for (Picture picture : Gallery.pictures()) {
+            if (WITHOUT_SCENE_FILE.contains(picture.name()))
+                continue;
             Path file = Path.of("scenes", picture.name() + ".xml");
             assertTrue(Files.isRegularFile(file), "TC01: missing scene file " + file);
             Picture loaded = SceneLoader.load(file);

@@ -220,6 +220,14 @@ class GeometriesTest {
         // TC04: after the refusals every query still ends: the ray meets the sphere twice through c
         assertEquals(2, c.findIntersections(ray).size(), "TC04: wrong intersections");
         assertEquals(3, c.version(), "TC04: wrong version: one addition to each of a, b and c");
+        // TC05: a cycle through an instance: e holds f, which holds an instance of e; then e.add(f), and
+        // e.add of an instance of an instance of e, are refused
+        Geometries e = new Geometries(sphere);
+        Geometries f = new Geometries(new Instance(e, primitives.Transform.rotateX(30)));
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> e.add(f), "TC05: e.add(f) must be refused"),
+                cycle, "TC05");
+        Instance twice = new Instance(new Instance(e, primitives.Transform.scale(2)), primitives.Transform.IDENTITY);
+        assertThrows(IllegalArgumentException.class, () -> e.add(twice), "TC05: an instance of e in e must be refused");
 
         // ===== Boundary Values Tests =====
         // TC11: one composite held in two places (no cycle) is allowed: d holds a directly and through b
@@ -257,6 +265,13 @@ class GeometriesTest {
         // TC03: a body added to a nested composite: a larger number for the outer one too
         inner.add(triangle);
         assertTrue(outer.version() > afterOuter, "TC03: adding to a nested composite must raise the version");
+
+        // TC04: a body added to a composite inside an instance: a larger number for the outer one too
+        Geometries placed = new Geometries(sphere);
+        outer.add(new Instance(placed, primitives.Transform.translate(new Vector(1, 0, 0))));
+        long withInstance = outer.version();
+        placed.add(triangle);
+        assertTrue(outer.version() > withInstance, "TC04: adding inside an instance must raise the version");
 
         // ===== Boundary Values Tests =====
         // TC11: a composite nested twice, then added to: counted in both places, still larger

@@ -166,4 +166,23 @@ class IntersectableTest {
         // TC14: the smallest positive distance is accepted (0 points within it: null)
         assertNull(sphere.findGeoIntersections(ray, Double.MIN_VALUE), "TC14: nothing lies within a tiny distance");
     }
+
+    /** Test method for {@link Intersectable#hierarchy(int)} and {@link Intersectable#version()} of a single body. */
+    @Test
+    void testHierarchy() {
+        Sphere sphere = new Sphere(Point3D.ZERO, 1);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a single body keeps one hierarchy (the same object twice), over itself: one bounded body
+        accel.BoundingVolumeHierarchy bvh = sphere.hierarchy(1);
+        org.junit.jupiter.api.Assertions.assertSame(bvh, sphere.hierarchy(2), "TC01: the hierarchy must be kept");
+        assertEquals(1, bvh.getBoundedCount(), "TC01: the sphere is the one body");
+        // TC02: a single body never changes: version 0; a hit names no face normal (null)
+        assertEquals(0, sphere.version(), "TC02: wrong version");
+        assertNull(new GeoPoint(sphere, new Point3D(0, 0, 1)).getFaceNormal(), "TC02: a sphere is its own face");
+
+        // ===== Boundary Values Tests =====
+        // TC11: 0 threads: refused, naming the threads
+        assertMessage(assertThrows(IllegalArgumentException.class, () -> sphere.hierarchy(0), "TC11: 0 threads"),
+                "threads", "TC11");
+    }
 }

@@ -47,6 +47,9 @@ class MeshPointTest {
         assertEquals(0, n.getX(), DELTA, "TC04: x");
         assertEquals(0, n.getY(), DELTA, "TC04: y");
         assertEquals(1, n.getZ(), DELTA, "TC04: z");
+        // TC05: the face normal: the triangle's (0, 0, 1) on the smooth mesh, none (null) on the flat one
+        assertEquals(new Vector(0, 0, 1), new MeshPoint(smooth, 1, p).getFaceNormal(), "TC05: the smooth mesh's face");
+        org.junit.jupiter.api.Assertions.assertNull(hit.getFaceNormal(), "TC05: a flat mesh is its own face");
 
         // ===== Boundary Values Tests =====
         // TC11: a hit at a vertex (the triangles' shared (0, 0, 0)): its UV is the vertex's, (0, 0)
