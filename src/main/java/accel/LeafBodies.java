@@ -188,17 +188,12 @@ final class LeafBodies {
      * @return the distance, or {@link Geometry#NO_HIT}
      */
     double nearestOfOthers(RayState ray) {
-        double nearest = Geometry.NO_HIT;
         if (others.length == 0)
-            return nearest;
+            return Geometry.NO_HIT;
         Ray course = ray.toRay();
-        for (Intersectable other : others) {
-            List<GeoPoint> hits = other.findGeoIntersections(course, ray.maxT);
-            if (hits != null)
-                for (GeoPoint hit : hits)
-                    nearest = Math.min(nearest, hit.point.distance(course.getP0()));
-        }
-        return nearest;
+        GeoPoint nearest = nearestOfOthers(course, null);
+        double t = nearest == null ? Geometry.NO_HIT : nearest.point.distance(course.getP0());
+        return t <= ray.maxT ? t : Geometry.NO_HIT;
     }
 
     private static GeoPoint nearer(Ray ray, GeoPoint nearest, List<GeoPoint> candidates) {

@@ -344,5 +344,13 @@ class BoundingVolumeHierarchyTest {
         assertFalse(BoundingVolumeHierarchy.build(new Plane(Point3D.ZERO, new Vector(0, 0, 1))).bounds(box),
                 "TC12: a plane has no box");
         assertFalse(BoundingVolumeHierarchy.build(new Geometries()).bounds(box), "TC12: nothing has no box");
+        // TC13: a body that is not a geometry (a wrapped sphere): no box, and still hit through the map (8),
+        // not beyond the ray's distance
+        BoundingVolumeHierarchy wrapped = BoundingVolumeHierarchy.build(new testutil.TestScenes.Wrapper(sphere));
+        assertFalse(wrapped.bounds(box), "TC13: an intersectable that is not a geometry has no box");
+        assertEquals(8, wrapped.nearestHit(ray.set(0, 0, 0, 1, 0, 0, Geometry.NO_HIT), toBody), 1e-12,
+                "TC13: wrong distance to the wrapped sphere");
+        assertEquals(Geometry.NO_HIT, wrapped.nearestHit(ray.set(0, 0, 0, 1, 0, 0, 7.9), toBody),
+                "TC13: the wrapped sphere's hit beyond maxT");
     }
 }
