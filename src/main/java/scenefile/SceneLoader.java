@@ -276,11 +276,11 @@ public final class SceneLoader {
             return body;
         }
 
-        /** The body placed by its element's {@code <transform>}, when it has one. */
+        /** The body placed by its element's {@code <transform>}, when it has one; an instance always is one. */
         private Intersectable placed(Intersectable body, SceneElement element) {
             SceneElement transform = element.child("transform");
             if (transform == null)
-                return body;
+                return element.name().equals("instance") ? new Instance(body, Transform.IDENTITY) : body;
             return new Instance(body, build(transform, () -> Placement.transform(transform, time)));
         }
     }
