@@ -4,6 +4,7 @@ import java.nio.file.Path;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Option;
+import renderer.ImageWriter;
 
 /**
  * The command line's animation options: {@code --frames N} renders the scene at N times of its run
@@ -59,8 +60,12 @@ final class AnimationOptions {
         boolean gif = output != null && Animation.isGif(output);
         if (!given()) {
             if (gif)
-                throw new CommandLine.ParameterException(commandLine, "-o " + output.getFileName()
-                        + ": a GIF is an animation: give --frames N");
+                try {
+                    ImageWriter.formatOf(output);
+                } catch (IllegalArgumentException e) {
+                    throw new CommandLine.ParameterException(commandLine, "-o: " + e.getMessage()
+                            + "; a .gif is an animation: give --frames N");
+                }
             return null;
         }
         if (frames == null)

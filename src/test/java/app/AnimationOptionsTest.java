@@ -40,7 +40,8 @@ class AnimationOptionsTest {
         assertBadArgument("TC01", "--frame-range goes with --frames N", scene, "--frame-range", "1-2", "-o", gif);
         assertBadArgument("TC01", "--assemble goes with --frames N", "--assemble", "-o", gif);
         // TC02: a GIF without --frames; --fps or --assemble without a GIF
-        assertBadArgument("TC02", "a GIF is an animation: give --frames N", scene, "-o", gif);
+        assertBadArgument("TC02", "must end with one of .bmp, .jpeg, .jpg, .png; a .gif is an animation: give"
+                + " --frames N", scene, "-o", gif);
         assertBadArgument("TC02", "--fps is the GIF's frame rate: it goes with -o NAME.gif", scene, "--frames", "2",
                 "--fps", "10", "-o", png);
         assertBadArgument("TC02", "--assemble builds a GIF: give -o NAME.gif", "--assemble", "--frames", "2", "-o", png);
