@@ -46,13 +46,13 @@ final class Animator {
      *
      * @param quiet whether to print nothing but a failure
      * @return the exit code: {@link RenderCommand#OK}
-     * @throws RenderCommand.Failure when a frame's file is missing
+     * @throws Failure when a frame's file is missing
      */
     int assemble(boolean quiet) {
         List<Path> files = animation.frameFiles(output);
         for (int k = 1; k <= files.size(); ++k)
             if (!Files.isRegularFile(files.get(k - 1)))
-                throw new RenderCommand.Failure(Printable.of(files.get(k - 1)) + ": frame " + k + " of "
+                throw new Failure(Printable.of(files.get(k - 1)) + ": frame " + k + " of "
                         + animation.frames() + " is missing: render it (--frame-range " + k + "-" + k
                         + ") before --assemble", null);
         ImageWriter.checkOutput(output);

@@ -594,13 +594,4 @@ public class RenderCommand implements Callable<Integer> {
             return new String[] { "raytracer " + properties.getProperty("version", "(version unknown)") };
         }
     }
-
-    /** A failure whose message is the whole line to print. */
-    static final class Failure extends RuntimeException {
-        private static final long serialVersionUID = 1L;
-
-        Failure(String line, Throwable cause) {
-            super(line, cause);
-        }
-    }
 }
