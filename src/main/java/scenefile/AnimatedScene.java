@@ -12,9 +12,9 @@ import static primitives.Util.requireFinite;
  * A scene file as an animation: its picture at any time of the run, from 0 (the first frame, and the
  * still picture {@link SceneLoader#load} gives) toward 1 (the end of the last frame). What moves is
  * what the file says: the camera's orbit ({@code <animation>}) and the spins of {@code <transform>}s.
- * The bodies that do not move are built once, for the first picture asked for, and shared by all
- * the others: a mesh is read from its file once. Every picture of a time is the same, whichever
- * pictures were asked for before it.
+ * A body whose parts do not move is built once, for the first picture asked for, and shared by all
+ * the others — a mesh is read from its file once, even when it spins; only its placement is made for
+ * each time. Every picture of a time is the same, whichever pictures were asked for before it.
  *
  * <pre>{@code
  * AnimatedScene turntable = SceneLoader.loadAnimation(Path.of("scenes/turntable.xml"));

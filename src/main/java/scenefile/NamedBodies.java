@@ -17,7 +17,7 @@ import java.util.Set;
 final class NamedBodies {
     /** The named elements, by name, in the order they are built: the library's first. */
     private final Map<String, SceneElement> declared = new LinkedHashMap<>();
-    /** Whether each element seen so far moves. */
+    /** Whether the parts of each element seen so far move. */
     private final Map<SceneElement, Boolean> moving = new IdentityHashMap<>();
     /** The elements whose motion is being found, so that an instance of its own group ends the search. */
     private final Set<SceneElement> open = Collections.newSetFromMap(new IdentityHashMap<>());
@@ -80,12 +80,24 @@ final class NamedBodies {
      * @return true when it is not the same in every frame
      */
     boolean moves(SceneElement element) {
+        return Placement.spins(element.child("transform")) || partsMove(element);
+    }
+
+    /**
+     * Whether what an element holds moves over an animation, its own {@code <transform>} aside: a child
+     * moves, or it is an instance of a body that moves. When nothing it holds moves, the body its element
+     * describes before its transform is the same in every frame.
+     *
+     * @param element a body, group or instance
+     * @return true when its parts are not the same in every frame
+     */
+    boolean partsMove(SceneElement element) {
         Boolean known = moving.get(element);
         if (known != null)
             return known;
         if (!open.add(element)) // an instance inside the group it names: refused when it is built
             return false;
-        boolean moves = Placement.spins(element.child("transform"));
+        boolean moves = false;
         List<SceneElement> parts = new ArrayList<>(element.children());
         if (element.name().equals("instance") && declared.containsKey(element.text("of")))
             parts.add(declared.get(element.text("of")));

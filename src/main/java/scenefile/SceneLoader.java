@@ -87,7 +87,8 @@ public final class SceneLoader {
      * @param file  the file
      * @param time  the time in the run, 0 for the still picture
      * @param names the file's named bodies
-     * @param still the bodies that do not move, built at an earlier time, by element; bodies built now are added
+     * @param still the bodies, before their transforms, of the elements whose parts do not move, built at an
+     *              earlier time; bodies built now are added
      * @return the picture
      * @throws SceneFileException when the file does not describe a valid scene
      */
@@ -211,8 +212,9 @@ public final class SceneLoader {
 
     /**
      * Builds the bodies of a scene file at a time of its animation: each placed by its {@code <transform>}
-     * (in an {@link Instance}), the named ones kept for the instances that follow them. A body that does not
-     * move is built once, at the first time asked for, and shared by the pictures of later times.
+     * (in an {@link Instance}), the named ones kept for the instances that follow them. A body whose parts
+     * do not move is built once, at the first time asked for, and shared by the pictures of later times
+     * (a mesh is read once); only its placement is made again.
      */
     private static final class Bodies {
         private final Path folder;
@@ -231,14 +233,20 @@ public final class SceneLoader {
 
         /** The body of an element, placed by its transform; a problem is reported at the element's place. */
         Intersectable body(SceneElement element) {
-            boolean moves = names.moves(element);
-            Intersectable body = moves ? null : still.get(element);
-            if (body == null) {
-                body = build(element, () -> placed(unplaced(element), element));
-                if (!moves)
-                    still.put(element, body);
-            }
+            Intersectable body = build(element, () -> placed(inner(element), element));
             built.put(element, body);
+            return body;
+        }
+
+        /** The body of an element before its transform: built once when its parts do not move. */
+        private Intersectable inner(SceneElement element) {
+            if (names.partsMove(element))
+                return unplaced(element);
+            Intersectable body = still.get(element);
+            if (body == null) {
+                body = unplaced(element);
+                still.put(element, body);
+            }
             return body;
         }
 
@@ -269,7 +277,9 @@ public final class SceneLoader {
         /** The named body an instance places (the transform is its element's, as for any body). */
         private Intersectable instance(SceneElement instance) {
             SceneElement target = names.target(instance);
-            Intersectable body = built.containsKey(target) ? built.get(target) : still.get(target);
+            Intersectable body = built.get(target);
+            if (body == null && still.containsKey(target)) // a still body in a group built at an earlier time
+                body = build(target, () -> placed(still.get(target), target));
             if (body == null)
                 throw instance.error("the body named '" + instance.text("of") + "' is not built yet: an <instance>"
                         + " places a body of <library>, or one before it in <geometries> that does not hold it", null);

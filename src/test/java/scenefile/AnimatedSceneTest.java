@@ -70,6 +70,21 @@ class AnimatedSceneTest {
         ImageWriter behind = render(orbit.at(0.5), "orbit50");
         assertEquals(1, orbit.at(0.5).camera().getVTo().getZ(), 1e-12, "TC04: the camera must look along +z");
         assertTrue(sphereAt(behind, x, y) && !sphereAt(behind, 23 - x, y), "TC04: seen from behind, right of centre");
+        // TC05: a spinning mesh is read once: each time places the same mesh anew
+        TestFiles.write(FOLDER, "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        AnimatedScene mesh = SceneLoader.loadAnimation(TestFiles.writeBodies(FOLDER, "mesh.xml",
+                "<mesh file=\"tri.obj\"><transform spin-y=\"360\"/></mesh>\n"));
+        Instance mesh0 = assertInstanceOf(Instance.class, bodies(mesh.at(0)).get(0), "TC05: a placed mesh");
+        Instance mesh1 = assertInstanceOf(Instance.class, bodies(mesh.at(0.5)).get(0), "TC05: a placed mesh");
+        assertNotSame(mesh0, mesh1, "TC05: the spin places the mesh anew");
+        assertSame(mesh0.getBody(), mesh1.getBody(), "TC05: the mesh must be read once");
+        // TC06: an instance of a still body inside a still group, at a later time: the body, placed
+        AnimatedScene inGroup = SceneLoader.loadAnimation(TestFiles.writeBodies(FOLDER, "in-group.xml",
+                "<geometries><sphere name=\"b\" center=\"0 0 0\" radius=\"1\"/></geometries>\n"
+                        + "<instance of=\"b\"><transform spin-y=\"90\" translate=\"5 0 0\"/></instance>\n"));
+        Geometries group0 = (Geometries) bodies(inGroup.at(0)).get(0);
+        Instance later = assertInstanceOf(Instance.class, bodies(inGroup.at(0.5)).get(1), "TC06: the instance");
+        assertSame(group0.getGeometries().get(0), later.getBody(), "TC06: the instance must place the sphere");
 
         // ===== Boundary Values Tests =====
         // TC11: a NaN or infinite time: refused
