@@ -12,12 +12,14 @@ import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.Callable;
 import java.util.function.LongConsumer;
+import java.util.function.Supplier;
 
 import lighting.AreaLightSource;
 import lighting.LightSource;
 import lighting.SpotLight;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -31,6 +33,7 @@ import renderer.Preview;
 import renderer.PreviewWindow;
 import renderer.RayTracerBase;
 import renderer.Render;
+import scenefile.AnimatedScene;
 import scenefile.Picture;
 import scenefile.RenderSettings;
 import scenefile.SceneFileException;
@@ -154,6 +157,11 @@ public class RenderCommand implements Callable<Integer> {
                     + " closed (without a display, say so and render anyway)")
     private boolean preview;
 
+    @Mixin
+    private AnimationOptions animationOptions = new AnimationOptions();
+    /** The frames of an animation, once the options are checked; null for a still picture. */
+    private Animation animation;
+
     private final boolean terminal;
 
     /** A command whose progress bar prints one line now and then, as it does when the error stream is a file. */
@@ -228,14 +236,18 @@ public class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        if (sceneFile == null && gallery == null)
+        if (sceneFile == null && gallery == null && !animationOptions.assembles())
             return usage();
         if (gallery != null)
             return renderGallery();
         checkArguments();
         Path file = outputFile();
+        if (animation != null) {
+            Animator animator = new Animator(this, animation, file, animationOptions.fps());
+            return animationOptions.assembles() ? animator.assemble(quiet) : animator.render(quiet, terminal, threads);
+        }
         ImageWriter.checkOutput(file);
-        Picture picture = adjust(load());
+        Picture picture = picture(loadAnimation(), 0);
         Render render = newRender(picture, file).setMultithreading(threads);
         Preview model = preview ? new Preview(render.getImageWriter(), file.getFileName().toString()) : null;
         PreviewWindow window = model == null ? null : openWindow(model, file);
@@ -320,7 +332,7 @@ public class RenderCommand implements Callable<Integer> {
      *
      * @param picture the picture, with the command line's options applied
      */
-    private void noteIgnoredEdges(Picture picture) {
+    void noteIgnoredEdges(Picture picture) {
         if (quiet || picture.settings().softShadows())
             return;
         for (LightSource light : picture.scene().lights)
@@ -373,10 +385,30 @@ public class RenderCommand implements Callable<Integer> {
         }
     }
 
-    /** Loads the scene file; not enough memory or stack for it is one line too. */
-    private Picture load() {
+    /** {@return the command line, for its streams} */
+    CommandLine commandLine() {
+        return spec.commandLine();
+    }
+
+    /** {@return the scene file} */
+    Path sceneFile() {
+        return sceneFile;
+    }
+
+    /** Reads the scene file; not enough memory or stack for it is one line too. */
+    AnimatedScene loadAnimation() {
+        return loading(() -> SceneLoader.loadAnimation(sceneFile));
+    }
+
+    /** The scene's picture at a time of its run, with the options applied; its bodies are built as for loading. */
+    Picture picture(AnimatedScene scene, double time) {
+        return adjust(loading(() -> scene.at(time)));
+    }
+
+    /** Runs a step of loading the scene: not enough memory or stack for it is one line. */
+    private <T> T loading(Supplier<T> step) {
         try {
-            return SceneLoader.load(sceneFile);
+            return step.get();
         } catch (OutOfMemoryError e) {
             throw new Failure(sceneFile + ": not enough memory to load the scene: its <mesh> files are too large;"
                     + " use smaller meshes or give Java more memory (java -Xmx...)", e);
@@ -387,7 +419,7 @@ public class RenderCommand implements Callable<Integer> {
     }
 
     /** The render of the picture; not enough memory for its image is one line naming the size. */
-    private Render newRender(Picture picture, Path file) {
+    Render newRender(Picture picture, Path file) {
         try {
             return picture.newRender(file);
         } catch (OutOfMemoryError e) {
@@ -406,7 +438,7 @@ public class RenderCommand implements Callable<Integer> {
      * @param render  its render
      * @param mute    silences the progress bar
      */
-    private void render(Picture picture, Render render, Runnable mute) {
+    void render(Picture picture, Render render, Runnable mute) {
         try {
             picture.render(render);
         } catch (OutOfMemoryError e) {
@@ -437,7 +469,10 @@ public class RenderCommand implements Callable<Integer> {
         if (focus != null)
             requireValid(() -> Camera.requireFocalDistance(focus, "--focus"));
         requireThreads();
-        if (output != null)
+        animation = animationOptions.check(spec.commandLine(), output);
+        if (animation != null && preview)
+            throw new CommandLine.ParameterException(spec.commandLine(), "--preview does not go with --frames");
+        if (output != null && !Animation.isGif(output))
             try {
                 ImageWriter.formatOf(output);
             } catch (IllegalArgumentException e) {
@@ -557,15 +592,6 @@ public class RenderCommand implements Callable<Integer> {
                     properties.load(in);
             }
             return new String[] { "raytracer " + properties.getProperty("version", "(version unknown)") };
-        }
-    }
-
-    /** A failure whose message is the whole line to print. */
-    private static final class Failure extends RuntimeException {
-        private static final long serialVersionUID = 1L;
-
-        Failure(String line, Throwable cause) {
-            super(line, cause);
         }
     }
 }

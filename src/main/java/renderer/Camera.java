@@ -69,6 +69,48 @@ public class Camera {
         this.vRight = this.vTo.crossProduct(this.vUp).normalize();
     }
 
+    /**
+     * A camera at a point, aimed at another: {@code vTo} is the unit direction from {@code from} to
+     * {@code to}, {@code vUp} the part of {@code up} orthogonal to it, normalized (not rounded, unlike
+     * {@link #orthogonalUp}), and {@code vRight = vTo × vUp}. {@code lookAt((0, 0, 10), (0, 0, 0), (0, 1, 0))}
+     * is the course's camera looking down −z.
+     *
+     * @param from where the camera is
+     * @param to   the point it looks at
+     * @param up   the direction up (any length, not parallel to {@code to − from})
+     * @return the camera, its view plane not yet set
+     * @throws IllegalArgumentException when a parameter is null, the two points coincide, or {@code up}
+     *                                  is parallel to the direction (within a millionth of a radian)
+     */
+    public static Camera lookAt(Point3D from, Point3D to, Vector up) {
+        requireNonNull(from, "lookAt from");
+        requireNonNull(to, "lookAt to");
+        requireNonNull(up, "lookAt up");
+        if (from.equals(to))
+            throw new IllegalArgumentException("lookAt from and to are the same point " + from
+                    + ": the camera has no direction to look to");
+        Vector vTo = to.subtract(from).normalize();
+        double[] part = orthogonalPart(vTo, up.normalized());
+        if (part == null)
+            throw new IllegalArgumentException("lookAt up " + up + " is parallel to the direction from " + from
+                    + " to " + to + ": no part of it is orthogonal to the direction");
+        return new Camera(from, vTo, new Vector(part[0], part[1], part[2]));
+    }
+
+    /**
+     * The part of a unit up vector orthogonal to a unit direction, normalized (Gram–Schmidt).
+     *
+     * @return its x, y and z, or null when the two are parallel within {@link #PARALLEL_SINE}
+     */
+    private static double[] orthogonalPart(Vector to, Vector up) {
+        double dot = to.dotProduct(up);
+        double x = up.getX() - dot * to.getX();
+        double y = up.getY() - dot * to.getY();
+        double z = up.getZ() - dot * to.getZ();
+        double sine = Math.sqrt(x * x + y * y + z * z);
+        return sine < PARALLEL_SINE ? null : new double[] {x / sine, y / sine, z / sine};
+    }
+
     /** What vUp would be, for the message refusing a vUp that is not orthogonal to vTo. */
     private static String upHint(Vector vTo, Vector vUp) {
         try {
@@ -94,21 +136,16 @@ public class Camera {
     public static Vector orthogonalUp(Vector vTo, Vector vUp) {
         Vector to = requireNonNull(vTo, "camera vTo").normalized();
         Vector up = requireNonNull(vUp, "camera vUp").normalized();
-        double dot = to.dotProduct(up);
-        double x = up.getX() - dot * to.getX();
-        double y = up.getY() - dot * to.getY();
-        double z = up.getZ() - dot * to.getZ();
-        double sine = Math.sqrt(x * x + y * y + z * z);
-        if (sine < PARALLEL_SINE)
+        double[] part = orthogonalPart(to, up);
+        if (part == null)
             throw new IllegalArgumentException("camera vUp " + vUp + " is parallel to vTo " + vTo
                     + ": no part of it is orthogonal to vTo");
         for (int decimals = MIN_UP_DECIMALS; decimals < MAX_UP_DECIMALS; ++decimals) {
-            Vector rounded = new Vector(round(x / sine, decimals), round(y / sine, decimals),
-                    round(z / sine, decimals));
+            Vector rounded = new Vector(round(part[0], decimals), round(part[1], decimals), round(part[2], decimals));
             if (isZero(to.dotProduct(rounded.normalized())))
                 return rounded;
         }
-        return new Vector(x / sine, y / sine, z / sine);
+        return new Vector(part[0], part[1], part[2]);
     }
 
     /** {@return the number rounded to this many decimals, half up} */

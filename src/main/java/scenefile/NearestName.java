@@ -13,7 +13,7 @@ final class NearestName {
     /** The longest name that gets a suggestion: longer ones are no slip of the keyboard. */
     static final int MAX_LENGTH = 64;
     /** The most valid names listed in a message; a longer list is left out. */
-    static final int MAX_LISTED = 10;
+    static final int MAX_LISTED = 11;
 
     private NearestName() {
     }

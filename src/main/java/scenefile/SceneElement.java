@@ -49,6 +49,11 @@ final class SceneElement {
         return name;
     }
 
+    /** {@return the line where the element's start tag ends} */
+    int line() {
+        return line;
+    }
+
     /** {@return the child elements, in file order} */
     List<SceneElement> children() {
         return Collections.unmodifiableList(children);

@@ -1,11 +1,14 @@
 package scenefile;
 
 import java.nio.file.Path;
+import java.util.IdentityHashMap;
+import java.util.Map;
 import java.util.function.Supplier;
 
 import geometries.Cylinder;
 import geometries.Geometries;
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.Intersectable;
 import geometries.Plane;
 import geometries.Polygon;
@@ -24,6 +27,7 @@ import primitives.ImageTexture;
 import primitives.Material;
 import primitives.Point3D;
 import primitives.Ray;
+import primitives.Transform;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.JitteredGrid;
@@ -59,12 +63,42 @@ public final class SceneLoader {
      * @throws SceneFileException when the file cannot be read or does not describe a valid scene
      */
     public static Picture load(Path file) {
-        requireNonNull(file, "scene file");
-        SceneElement root = SceneParser.parse(file);
-        return build(root, () -> picture(root, file));
+        return loadAnimation(file).at(0);
     }
 
-    private static Picture picture(SceneElement root, Path file) {
+    /**
+     * Loads a scene file whose bodies and camera may move: its pictures at the times of an animation.
+     *
+     * @param file the scene file; OBJ files it names are found relative to its folder
+     * @return the scene at any time of the animation's run
+     * @throws SceneFileException when the file cannot be read or does not describe a valid scene (some
+     *                            problems, such as a zero scale, only when a picture is asked for)
+     */
+    public static AnimatedScene loadAnimation(Path file) {
+        requireNonNull(file, "scene file");
+        SceneElement root = SceneParser.parse(file);
+        return build(root, () -> new AnimatedScene(root, file));
+    }
+
+    /**
+     * The picture a scene file describes at a time of its animation.
+     *
+     * @param root  the file's root element
+     * @param file  the file
+     * @param time  the time in the run, 0 for the still picture
+     * @param names the file's named bodies
+     * @param still the bodies, before their transforms, of the elements whose parts do not move, built at an
+     *              earlier time; bodies built now are added
+     * @return the picture
+     * @throws SceneFileException when the file does not describe a valid scene
+     */
+    static Picture picture(SceneElement root, Path file, double time, NamedBodies names,
+                           Map<SceneElement, Intersectable> still) {
+        Bodies bodies = new Bodies(file.toAbsolutePath().getParent(), time, names, still);
+        return build(root, () -> picture(root, file, bodies));
+    }
+
+    private static Picture picture(SceneElement root, Path file, Bodies bodies) {
         String name = root.has("name") ? root.text("name") : baseName(file);
         Scene scene = new Scene(name).setBackground(root.color("background-color"));
         SceneElement ambient = root.child("ambient-light");
@@ -75,14 +109,22 @@ public final class SceneLoader {
         if (lights != null)
             for (SceneElement light : lights.children())
                 scene.lights.add(build(light, () -> light(light)));
+        SceneElement library = root.child("library");
+        if (library != null)
+            for (SceneElement element : library.children())
+                bodies.body(element);
         SceneElement geometries = root.child("geometries");
-        if (geometries != null)
-            scene.setGeometries(geometries(geometries, file.toAbsolutePath().getParent()));
+        if (geometries != null) {
+            Intersectable all = bodies.body(geometries);
+            scene.setGeometries(all instanceof Geometries group ? group : new Geometries(all));
+        }
         SceneElement image = root.child("image");
         int nX = image == null ? IMAGE_SIZE : image.integer("width");
         int nY = image == null ? IMAGE_SIZE : image.integer("height");
         int grid = image == null ? 0 : image.integer("grid");
-        Camera camera = camera(root.child("camera"));
+        SceneElement animation = root.child("animation");
+        Transform orbit = animation == null ? null : build(animation, () -> Placement.orbit(animation, bodies.time));
+        Camera camera = camera(root.child("camera"), orbit);
         RenderSettings settings = settings(root.child("render"));
         return build(image == null ? root : image, () -> new Picture(name, nX, nY, scene, camera, grid, settings));
     }
@@ -92,13 +134,17 @@ public final class SceneLoader {
         return name.endsWith(".xml") ? name.substring(0, name.length() - ".xml".length()) : name;
     }
 
-    private static Camera camera(SceneElement camera) {
-        if (camera == null) // the schema's defaults: the course's first camera
-            return new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0)).setVpSize(500, 500)
-                    .setVpDistance(100);
-        return build(camera, () -> lens(frame(camera)
-                .setVpSize(camera.number("vp-width"), camera.number("vp-height"))
-                .setVpDistance(camera.number("vp-distance")), camera));
+    /** The camera of its element, or the default one, turned by the animation's orbit when there is one. */
+    private static Camera camera(SceneElement camera, Transform orbit) {
+        if (camera == null) { // the schema's defaults: the course's first camera
+            Camera course = new Camera(Point3D.ZERO, new Vector(0, 0, -1), new Vector(0, 1, 0));
+            return (orbit == null ? course : Placement.orbited(course, orbit)).setVpSize(500, 500).setVpDistance(100);
+        }
+        return build(camera, () -> {
+            Camera placed = orbit == null ? frame(camera) : Placement.orbited(frame(camera), orbit);
+            return lens(placed.setVpSize(camera.number("vp-width"), camera.number("vp-height"))
+                    .setVpDistance(camera.number("vp-distance")), camera);
+        });
     }
 
     /** The camera of its element's p0, vTo and vUp; a vUp not orthogonal to vTo is told what it would be. */
@@ -164,20 +210,89 @@ public final class SceneLoader {
         return point;
     }
 
-    private static Geometries geometries(SceneElement group, Path folder) {
-        Geometries geometries = new Geometries();
-        for (SceneElement element : group.children())
-            geometries.add(build(element, () -> body(element, folder)));
-        return geometries;
-    }
+    /**
+     * Builds the bodies of a scene file at a time of its animation: each placed by its {@code <transform>}
+     * (in an {@link Instance}), the named ones kept for the instances that follow them. A body whose parts
+     * do not move is built once, at the first time asked for, and shared by the pictures of later times
+     * (a mesh is read once); only its placement is made again.
+     */
+    private static final class Bodies {
+        private final Path folder;
+        private final double time;
+        private final NamedBodies names;
+        private final Map<SceneElement, Intersectable> still;
+        /** The bodies built at this time, by element. */
+        private final Map<SceneElement, Intersectable> built = new IdentityHashMap<>();
 
-    private static Intersectable body(SceneElement element, Path folder) {
-        return switch (element.name()) {
-            case "geometries" -> geometries(element, folder);
-            case "mesh" -> texture(surface(mesh(element, folder), element), element, folder);
-            case "triangle-mesh" -> texture(surface(triangleMesh(element), element), element, folder);
-            default -> texture(surface(shape(element), element), element, folder);
-        };
+        Bodies(Path folder, double time, NamedBodies names, Map<SceneElement, Intersectable> still) {
+            this.folder = folder;
+            this.time = time;
+            this.names = names;
+            this.still = still;
+        }
+
+        /** The body of an element, placed by its transform; a problem is reported at the element's place. */
+        Intersectable body(SceneElement element) {
+            Intersectable body = build(element, () -> placed(inner(element), element));
+            built.put(element, body);
+            return body;
+        }
+
+        /** The body of an element before its transform: built once when its parts do not move. */
+        private Intersectable inner(SceneElement element) {
+            if (names.partsMove(element))
+                return unplaced(element);
+            Intersectable body = still.get(element);
+            if (body == null) {
+                body = unplaced(element);
+                still.put(element, body);
+            }
+            return body;
+        }
+
+        private Intersectable unplaced(SceneElement element) {
+            return switch (element.name()) {
+                case "geometries" -> geometries(element);
+                case "instance" -> instance(element);
+                case "mesh" -> texture(surface(mesh(element, folder), element), element, folder);
+                case "triangle-mesh" -> texture(surface(triangleMesh(element), element), element, folder);
+                default -> texture(surface(shape(element), element), element, folder);
+            };
+        }
+
+        private Geometries geometries(SceneElement group) {
+            Geometries geometries = new Geometries();
+            SceneElement transform = null;
+            for (SceneElement element : group.children())
+                if (!element.name().equals("transform"))
+                    geometries.add(body(element));
+                else if (transform == null)
+                    transform = element;
+                else
+                    throw element.error("a group has one <transform> at most; the first is at line "
+                            + transform.line(), null);
+            return geometries;
+        }
+
+        /** The named body an instance places (the transform is its element's, as for any body). */
+        private Intersectable instance(SceneElement instance) {
+            SceneElement target = names.target(instance);
+            Intersectable body = built.get(target);
+            if (body == null && still.containsKey(target)) // a still body in a group built at an earlier time
+                body = build(target, () -> placed(still.get(target), target));
+            if (body == null)
+                throw instance.error("the body named '" + instance.text("of") + "' is not built yet: an <instance>"
+                        + " places a body of <library>, or one before it in <geometries> that does not hold it", null);
+            return body;
+        }
+
+        /** The body placed by its element's {@code <transform>}, when it has one; an instance always is one. */
+        private Intersectable placed(Intersectable body, SceneElement element) {
+            SceneElement transform = element.child("transform");
+            if (transform == null)
+                return element.name().equals("instance") ? new Instance(body, Transform.IDENTITY) : body;
+            return new Instance(body, build(transform, () -> Placement.transform(transform, time)));
+        }
     }
 
     private static Geometry shape(SceneElement element) {

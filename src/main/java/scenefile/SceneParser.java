@@ -64,17 +64,19 @@ final class SceneParser {
     private static final Pattern TEXT_CONTENT = Pattern.compile("Element '(.*)' cannot have character .*");
     private static final Pattern ANY_CONTENT = Pattern.compile(
             "Element '(.*)' must have no character or element information item .*");
-    private static final Map<String, String> TYPES = Map.of(
-            "number", "a number",
-            "triple", "three numbers",
-            "vertices", "a list of numbers, x y z for each of 3 or more vertices",
-            "numbers", "a list of numbers",
-            "indices", "a list of whole numbers, 0 or more",
-            "count", "a whole number, 1 or more",
-            "whole", "a whole number, 0 or more",
-            "seed", "a whole number",
-            "flag", "true or false",
-            "path", "a file name");
+    private static final Map<String, String> TYPES = Map.ofEntries(
+            Map.entry("number", "a number"),
+            Map.entry("triple", "three numbers"),
+            Map.entry("vertices", "a list of numbers, x y z for each of 3 or more vertices"),
+            Map.entry("numbers", "a list of numbers"),
+            Map.entry("indices", "a list of whole numbers, 0 or more"),
+            Map.entry("count", "a whole number, 1 or more"),
+            Map.entry("whole", "a whole number, 0 or more"),
+            Map.entry("seed", "a whole number"),
+            Map.entry("flag", "true or false"),
+            Map.entry("path", "a file name"),
+            Map.entry("name", "a name: a letter or '_', then letters, digits, '_', '-' or '.'"),
+            Map.entry("scale", "one number, or three (x y z)"));
 
     private SceneParser() {
     }

@@ -35,6 +35,8 @@ final class SchemaNames {
     private final Map<String, Element> types = new HashMap<>();
     /** Each named attribute group's element of the schema, by name. */
     private final Map<String, Element> groups = new HashMap<>();
+    /** Each named model group's element of the schema (a choice of elements), by name. */
+    private final Map<String, Element> modelGroups = new HashMap<>();
     /** Each element's attributes, by the element's name. */
     private final Map<String, List<String>> attributes = new HashMap<>();
     /** Each element's child elements, by the element's name. */
@@ -46,6 +48,8 @@ final class SchemaNames {
                 types.put(child.getAttribute("name"), child);
             else if (child.getLocalName().equals("attributeGroup"))
                 groups.put(child.getAttribute("name"), child);
+            else if (child.getLocalName().equals("group"))
+                modelGroups.put(child.getAttribute("name"), child);
         declare(schema);
     }
 
@@ -127,6 +131,11 @@ final class SchemaNames {
                         collect(group, names, elements);
                 }
                 case "element" -> elements.add(child.getAttribute("name"));
+                case "group" -> {
+                    Element group = modelGroups.get(child.getAttribute("ref"));
+                    if (group != null)
+                        collect(group, names, elements);
+                }
                 case "extension" -> {
                     Element base = types.get(child.getAttribute("base"));
                     if (base != null)

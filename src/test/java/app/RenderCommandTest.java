@@ -5,11 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestCommands.run;
+import static testutil.TestImages.samePixels;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -34,6 +34,7 @@ import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 
 import scenefile.ObjMesh;
+import testutil.TestCommands.Result;
 import testutil.TestFiles;
 
 import static testutil.TestAssertions.assertPrintable;
@@ -87,14 +88,6 @@ class RenderCommandTest {
 
     private static Path sceneFile;
 
-    /** The result of one run of the command. */
-    private record Result(int code, String out, String err) {
-        /** @return the error stream's lines */
-        List<String> errLines() {
-            return err.lines().toList();
-        }
-    }
-
     /** Writes the test scene (with the file's own settings, hard shadows) into the test folder. */
     @BeforeAll
     static void writeScene() {
@@ -117,17 +110,6 @@ class RenderCommandTest {
     }
 
     /** Runs the command in this process, not on a terminal. */
-    private static Result run(String... args) {
-        return run(false, args);
-    }
-
-    private static Result run(boolean terminal, String... args) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        int code = RenderCommand.newCommandLine(terminal).setOut(new PrintWriter(out)).setErr(new PrintWriter(err))
-                .execute(args);
-        return new Result(code, out.toString(), err.toString());
-    }
 
     /** Renders the test scene to target/test-cli/NAME.png with more arguments, checking that it succeeds. */
     private static Result render(String name, String... args) {
@@ -357,14 +339,6 @@ class RenderCommandTest {
         String[] all = Arrays.copyOf(first, first.length + more.length);
         System.arraycopy(more, 0, all, first.length, more.length);
         return all;
-    }
-
-    private static boolean samePixels(BufferedImage a, BufferedImage b) {
-        for (int y = 0; y < a.getHeight(); ++y)
-            for (int x = 0; x < a.getWidth(); ++x)
-                if (a.getRGB(x, y) != b.getRGB(x, y))
-                    return false;
-        return true;
     }
 
     /**

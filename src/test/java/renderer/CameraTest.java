@@ -131,6 +131,80 @@ class CameraTest {
                 "TC14: null vUp accepted"), "vUp", "TC14");
     }
 
+    /** Test method for {@link renderer.Camera#lookAt(Point3D, Point3D, Vector)}. */
+    @Test
+    void testLookAt() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: from (0, 0, 10) at the origin, up (0, 1, 0): vTo (0, 0, −1), vUp (0, 1, 0), vRight (1, 0, 0)
+        Camera camera = Camera.lookAt(new Point3D(0, 0, 10), Point3D.ZERO, new Vector(0, 1, 0));
+        assertEquals(new Point3D(0, 0, 10), camera.getP0(), "TC01: wrong position");
+        assertEquals(new Vector(0, 0, -1), camera.getVTo(), "TC01: wrong vTo");
+        assertEquals(new Vector(0, 1, 0), camera.getVUp(), "TC01: wrong vUp");
+        assertEquals(new Vector(1, 0, 0), camera.getVRight(), "TC01: wrong vRight");
+        // TC02: from (10, 10, 10) at the origin, up (0, 3, 0): vTo −(1, 1, 1)/√3, vUp (−1, 2, −1)/√6,
+        // vRight (1, 0, −1)/√2, an orthonormal basis
+        camera = Camera.lookAt(new Point3D(10, 10, 10), Point3D.ZERO, new Vector(0, 3, 0));
+        double s3 = 1 / Math.sqrt(3);
+        double s6 = 1 / Math.sqrt(6);
+        double s2 = 1 / Math.sqrt(2);
+        assertVector(-s3, -s3, -s3, camera.getVTo(), "TC02: wrong vTo");
+        assertVector(-s6, 2 * s6, -s6, camera.getVUp(), "TC02: wrong vUp");
+        assertVector(s2, 0, -s2, camera.getVRight(), "TC02: wrong vRight");
+        assertOrthonormal(camera, "TC02");
+        // TC03: an up leaning toward the direction keeps only its orthogonal part: from the origin to
+        // (0, 0, −5), up (0, 1, −1): vUp (0, 1, 0)
+        camera = Camera.lookAt(Point3D.ZERO, new Point3D(0, 0, -5), new Vector(0, 1, -1));
+        assertVector(0, 1, 0, camera.getVUp(), "TC03: wrong vUp");
+        assertOrthonormal(camera, "TC03");
+        // TC04: an oblique look from (1, 2, 3) to (4, −2, 3) with up (0, 0, 1): vTo (3, −4, 0)/5, vUp (0, 0, 1),
+        // vRight vTo × vUp = (−4, −3, 0)/5
+        camera = Camera.lookAt(new Point3D(1, 2, 3), new Point3D(4, -2, 3), new Vector(0, 0, 1));
+        assertVector(0.6, -0.8, 0, camera.getVTo(), "TC04: wrong vTo");
+        assertVector(0, 0, 1, camera.getVUp(), "TC04: wrong vUp");
+        assertVector(-0.8, -0.6, 0, camera.getVRight(), "TC04: wrong vRight");
+
+        // ===== Boundary Values Tests =====
+        // TC11: from and to the same point: refused, naming it
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> Camera.lookAt(new Point3D(1, 2, 3), new Point3D(1, 2, 3), new Vector(0, 1, 0)),
+                "TC11: from = to accepted");
+        assertMessage(e, "the same point", "TC11");
+        // TC12: up parallel to the direction, either way, or within a millionth of a radian: refused
+        for (Vector parallel : new Vector[] { new Vector(0, 0, -2), new Vector(0, 0, 1), new Vector(0, 1e-7, 1) }) {
+            e = assertThrows(IllegalArgumentException.class,
+                    () -> Camera.lookAt(Point3D.ZERO, new Point3D(0, 0, -1), parallel), "TC12: parallel up accepted");
+            assertMessage(e, "is parallel to the direction", "TC12");
+        }
+        // TC13: an up a hundred-thousandth of a radian off the direction is enough: vUp (0, 1, 0)
+        camera = Camera.lookAt(Point3D.ZERO, new Point3D(0, 0, -1), new Vector(0, 1e-5, -1));
+        assertVector(0, 1, 0, camera.getVUp(), "TC13: wrong vUp");
+        // TC14: nulls: refused, naming the parameter
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> Camera.lookAt(null, Point3D.ZERO, new Vector(0, 1, 0)), "TC14: null from"), "from", "TC14");
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> Camera.lookAt(Point3D.ZERO, null, new Vector(0, 1, 0)), "TC14: null to"), "to", "TC14");
+        assertMessage(assertThrows(IllegalArgumentException.class,
+                () -> Camera.lookAt(Point3D.ZERO, new Point3D(0, 0, 1), null), "TC14: null up"), "up", "TC14");
+    }
+
+    /** Asserts a vector's components within 1e-12. */
+    private static void assertVector(double x, double y, double z, Vector v, String message) {
+        assertEquals(x, v.getX(), 1e-12, message + " (x)");
+        assertEquals(y, v.getY(), 1e-12, message + " (y)");
+        assertEquals(z, v.getZ(), 1e-12, message + " (z)");
+    }
+
+    /** Asserts that a camera's vTo, vUp and vRight are unit vectors, orthogonal to each other, vRight = vTo × vUp. */
+    private static void assertOrthonormal(Camera camera, String tc) {
+        Vector[] basis = { camera.getVTo(), camera.getVUp(), camera.getVRight() };
+        for (int a = 0; a < 3; ++a) {
+            assertEquals(1, basis[a].length(), 1e-12, tc + ": not a unit vector: " + basis[a]);
+            for (int b = a + 1; b < 3; ++b)
+                assertEquals(0, basis[a].dotProduct(basis[b]), 1e-12, tc + ": not orthogonal: " + basis[a] + ", " + basis[b]);
+        }
+        assertEquals(camera.getVTo().crossProduct(camera.getVUp()), camera.getVRight(), tc + ": vRight is not vTo × vUp");
+    }
+
     /**
      * Test method for {@link renderer.Camera#setVpSize(double, double)} and
      * {@link renderer.Camera#setVpDistance(double)}.

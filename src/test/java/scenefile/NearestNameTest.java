@@ -75,12 +75,12 @@ class NearestNameTest {
                 NearestName.hint("imag", List.of("image", "lights"), "<%s>", "expected one of:"), "TC05: wrong hint");
 
         // ===== Boundary Values Tests =====
-        // TC11: 10 valid names are listed, 11 are not
-        List<String> ten = SPHERE.subList(0, NearestName.MAX_LISTED);
-        assertEquals("; it has: " + String.join(", ", ten), NearestName.hint("foo", ten, "'%s'", "it has:"),
-                "TC11: 10 names must be listed");
+        // TC11: 11 valid names are listed (a group's children), 12 are not
+        List<String> eleven = SPHERE.subList(0, NearestName.MAX_LISTED);
+        assertEquals("; it has: " + String.join(", ", eleven), NearestName.hint("foo", eleven, "'%s'", "it has:"),
+                "TC11: 11 names must be listed");
         assertEquals("", NearestName.hint("foo", SPHERE.subList(0, NearestName.MAX_LISTED + 1), "'%s'", "it has:"),
-                "TC11: 11 names must not be listed");
+                "TC11: 12 names must not be listed");
         // TC12: no valid name: nothing
         assertEquals("", NearestName.hint("foo", List.of(), "'%s'", "it has:"), "TC12: wrong hint");
     }

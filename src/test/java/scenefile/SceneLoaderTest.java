@@ -397,11 +397,13 @@ class SceneLoaderTest {
         // TC03: a missing image, named with its path
         assertBadFile(bodiesFile("missing.xml", "<sphere center=\"0 0 0\" radius=\"1\">\n"
                 + "<image-texture file=\"nowhere.png\"/>\n</sphere>\n"), 4, "nowhere.png", "TC03");
-        // TC04: a texture on a mesh without texture coordinates; TC05: on a tube, which the schema refuses
+        // TC04: a texture on a mesh without texture coordinates; TC05: on a tube, which the schema refuses (a tube
+        // may hold only a <transform>)
         assertBadFile(bodiesFile("no-uv.xml", "<mesh file=\"models/plain.obj\">\n" + checker + "</mesh>\n"), 3,
                 "surface coordinates", "TC04");
         assertBadFile(bodiesFile("tube.xml", "<tube p0=\"0 0 0\" dir=\"0 1 0\" radius=\"1\">\n" + checker
-                + "</tube>\n"), 5, "<tube> must not contain text or elements", "TC05");
+                + "</tube>\n"), 4, "element <checker-texture> is unknown or not allowed here; expected one of: transform",
+                "TC05");
         // TC06: a given mesh's normals of the wrong number
         assertBadFile(bodiesFile("normals.xml", triangle + "triangles=\"0 1 2\" normals=\"0 0 1\"/>\n"), 3,
                 "9 numbers", "TC06");

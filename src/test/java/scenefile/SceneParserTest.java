@@ -217,7 +217,8 @@ class SceneParserTest {
                 "geometries"), "TC11: wrong message");
         // TC12: no element expected, in <scene>: its children listed; with no parent known, nothing added
         assertEquals("element <foo> is unknown or not allowed here; <scene> has: camera, image, render, ambient-light,"
-                + " lights, geometries", SceneParser.plain(noneExpected, "scene"), "TC12: wrong message");
+                + " lights, geometries, library, animation", SceneParser.plain(noneExpected, "scene"),
+                "TC12: wrong message");
         assertEquals("element <foo> is unknown or not allowed here", SceneParser.plain(noneExpected, null),
                 "TC12: wrong message without a parent");
         // TC13: the second-element message needs the parent: without it, the expected list as before
@@ -357,7 +358,8 @@ class SceneParserTest {
         Path cube = file("cube.xml", "<scene><geometries><cube/></geometries></scene>");
         e = assertThrows(SceneFileException.class, () -> SceneParser.parse(cube), "TC02: <cube> must be reported");
         assertEquals("element <cube> is unknown or not allowed here; expected one of: sphere, triangle, polygon, "
-                + "plane, tube, cylinder, mesh, triangle-mesh, geometries", e.getProblem(), "TC02: wrong problem");
+                + "plane, tube, cylinder, mesh, triangle-mesh, geometries, instance, transform", e.getProblem(),
+                "TC02: wrong problem");
         assertEquals(1, e.getLine(), "TC02: wrong line");
         assertEquals(27, e.getColumn(), "TC02: wrong column");
         // TC03: XML that is not well-formed: the parser's own message, with its place

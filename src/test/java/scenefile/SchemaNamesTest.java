@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 class SchemaNamesTest {
     /** The emission and material every body has (the schema's attribute group "surface"). */
     private static final List<String> SURFACE = List.of("emission", "kD", "kS", "kT", "kR", "kG", "kB", "nShininess",
-            "ior", "fresnel");
+            "ior", "fresnel", "name");
 
     /** Test method for {@link SchemaNames#attributes(String)}. */
     @Test
@@ -32,10 +32,12 @@ class SchemaNamesTest {
                 names.attributes("spot-light"), "TC03: wrong attributes");
         // TC04: the root's anonymous type: <scene> has name and background-color
         assertEquals(List.of("name", "background-color"), names.attributes("scene"), "TC04: wrong attributes");
+        // TC05: a group has only a name
+        assertEquals(List.of("name"), names.attributes("geometries"), "TC05: wrong attributes");
 
         // ===== Boundary Values Tests =====
-        // TC11: an element without attributes (<geometries>), and one the schema does not declare: none
-        assertEquals(List.of(), names.attributes("geometries"), "TC11: <geometries> has no attributes");
+        // TC11: an element without attributes (<library>), and one the schema does not declare: none
+        assertEquals(List.of(), names.attributes("library"), "TC11: <library> has no attributes");
         assertEquals(List.of(), names.attributes("cube"), "TC11: an undeclared element has no attributes");
         // TC12: the names are read once
         assertSame(names, SchemaNames.scene(), "TC12: the schema must be read once");
@@ -47,18 +49,24 @@ class SchemaNamesTest {
         SchemaNames names = SchemaNames.scene();
         // ===== Equivalence Partitions Tests =====
         // TC01: the root's children (xs:all), in the schema's order
-        assertEquals(List.of("camera", "image", "render", "ambient-light", "lights", "geometries"),
+        assertEquals(List.of("camera", "image", "render", "ambient-light", "lights", "geometries", "library",
+                        "animation"),
                 names.children("scene"), "TC01: wrong children of <scene>");
-        // TC02: a choice, nesting itself: <geometries> holds every body and <geometries>
-        assertEquals(List.of("sphere", "triangle", "polygon", "plane", "tube", "cylinder", "mesh", "triangle-mesh",
-                "geometries"), names.children("geometries"), "TC02: wrong children of <geometries>");
+        // TC02: a choice, nesting itself through a model group: <geometries> holds every body, <geometries>,
+        // <instance> and a transform
+        assertEquals(List.of("sphere", "triangle", "polygon", "plane", "tube", "cylinder", "mesh",
+                "triangle-mesh", "geometries", "instance", "transform"), names.children("geometries"),
+                "TC02: wrong children of <geometries>");
         // TC03: <lights> holds the three lights
         assertEquals(List.of("directional-light", "point-light", "spot-light"), names.children("lights"),
                 "TC03: wrong children of <lights>");
+        // TC04: model groups inside model groups: <sphere> holds a transform and a texture
+        assertEquals(List.of("transform", "image-texture", "checker-texture"), names.children("sphere"),
+                "TC04: wrong children of <sphere>");
 
         // ===== Boundary Values Tests =====
-        // TC11: an empty element (<sphere>) and an undeclared one: no children
-        assertEquals(List.of(), names.children("sphere"), "TC11: <sphere> has no children");
+        // TC11: an empty element (<transform>) and an undeclared one: no children
+        assertEquals(List.of(), names.children("transform"), "TC11: <transform> has no children");
         assertEquals(List.of(), names.children("cube"), "TC11: an undeclared element has no children");
     }
 

@@ -42,6 +42,19 @@ public final class TestFiles {
     }
 
     /**
+     * Writes a scene file of some bodies: {@code <scene>}, a line, {@code <geometries>}, a line, the bodies
+     * (from line 3), {@code </geometries>}, {@code </scene>}.
+     *
+     * @param folder the folder, created when missing
+     * @param name   the file's name
+     * @param bodies the bodies' elements, and lines
+     * @return the file's path
+     */
+    public static Path writeBodies(Path folder, String name, String bodies) {
+        return write(folder, name, "<scene>\n<geometries>\n" + bodies + "</geometries>\n</scene>\n");
+    }
+
+    /**
      * Writes a PNG image, creating its folder.
      *
      * @param folder the folder
