@@ -30,8 +30,6 @@ import scenefile.SceneLoader;
  */
 class GalleryTest {
     private static final Path FOLDER = Path.of("target", "test-images", "gallery");
-    /** The pictures whose scenes a scene file cannot express yet: instances wait for {@code <instance>} (issue 28, item 4). */
-    private static final Set<String> WITHOUT_SCENE_FILE = Set.of("instancedMeshes");
 
     private static BufferedImage reportImage(String name) throws IOException {
         try (InputStream in = GalleryTest.class.getResourceAsStream("/report/" + name)) {
@@ -180,11 +178,8 @@ class GalleryTest {
     void testSceneFilesMatchPictures() throws IOException {
         Path quarterFolder = Path.of("target", "test-images", "gallery-files");
         // ===== Equivalence Partitions Tests =====
-        // TC01: for each of the 23 pictures a scene file can express, the scene file exists and loads into
-        // the same picture
+        // TC01: for each of the 24 pictures, the scene file exists and loads into the same picture
         for (Picture picture : Gallery.pictures()) {
-            if (WITHOUT_SCENE_FILE.contains(picture.name()))
-                continue;
             Path file = Path.of("scenes", picture.name() + ".xml");
             assertTrue(Files.isRegularFile(file), "TC01: missing scene file " + file);
             Picture loaded = SceneLoader.load(file);
