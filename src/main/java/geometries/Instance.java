@@ -81,6 +81,17 @@ public final class Instance extends Geometry {
     }
 
     /**
+     * The body's hierarchy as {@link #tree()} last found it, without asking the body's version again:
+     * the walks' accessor. An outer hierarchy reads every instance's box ({@link #bounds}, which calls
+     * {@link #tree()}) when it is built, and is built again when a body inside an instance grows (its
+     * version counts the instance's body), so a ray walks the body as its outer tree saw it.
+     */
+    private BoundingVolumeHierarchy walked() {
+        BoundingVolumeHierarchy current = tree;
+        return current != null ? current : tree();
+    }
+
+    /**
      * The unit normal at a point of an instance of a single geometry: the body's there, carried to
      * the world. Shading reads the normal of a hit's {@link GeoPoint} instead, which knows the body hit.
      *
@@ -139,19 +150,19 @@ public final class Instance extends Geometry {
     /** {@return the nearest hit of the body, its hierarchy walked in the body's space} */
     @Override
     public double nearestHit(RayState ray) {
-        return tree().nearestHit(ray, toBody);
+        return walked().nearestHit(ray, toBody);
     }
 
     /** {@return the product of the {@code kT} of the body's hits, each inner body's own} */
     @Override
     public double transmittance(RayState ray) {
-        return tree().transmittance(ray, toBody);
+        return walked().transmittance(ray, toBody);
     }
 
     /** {@return the body's nearest hit on the ray, carried to the world (the part is not used)} */
     @Override
     public GeoPoint hitPoint(Ray ray, double t, int part) {
-        GeoPoint inner = tree().closestHit(toRayState(ray, NO_HIT), toBody);
+        GeoPoint inner = walked().closestHit(toRayState(ray, NO_HIT), toBody);
         return inner == null ? new GeoPoint(this, ray.getPoint(t)) : new InstancePoint(inner, transform, inverse);
     }
 
