@@ -57,6 +57,9 @@ final class PixelProgress implements AutoCloseable {
     public void close() {
         try {
             bar.close();
+            // the library ends the bar (consumer.close) only when its final draw is not also its first:
+            // a render done before the first scheduled draw would leave the line open
+            consumer.close();
         } finally {
             consumer.closeTerminal();
         }
