@@ -17,6 +17,7 @@ import javax.imageio.metadata.IIOMetadata;
 import javax.imageio.metadata.IIOMetadataNode;
 import javax.imageio.stream.ImageOutputStream;
 
+import primitives.FileReplacement;
 import primitives.Printable;
 
 /**
@@ -53,7 +54,7 @@ final class GifWriter {
      * Writes the animation of image files (PNG, say) into a GIF, reading one at a time.
      *
      * @param frames the frames' files, in order, all of one size
-     * @param gif    the GIF file, replaced when it exists
+     * @param gif    the GIF file, replaced whole when it exists (a failed write leaves it as it was)
      * @param fps    frames a second, 1 to {@link #MAX_FPS}
      * @throws UncheckedIOException     when a frame cannot be read or the GIF cannot be written; the message
      *                                  names the file
@@ -64,6 +65,15 @@ final class GifWriter {
         int delay = delay(fps);
         if (frames.isEmpty())
             throw new IllegalArgumentException(Printable.of(gif) + ": an animation needs one frame at least");
+        try {
+            FileReplacement.replace(gif, temporary -> writeFrames(frames, temporary, delay));
+        } catch (IOException e) {
+            throw new UncheckedIOException(Printable.of(gif + ": cannot write the GIF: " + e.getMessage()), e);
+        }
+    }
+
+    /** Writes the frames into a GIF file, each shown for a delay in hundredths of a second. */
+    private static void writeFrames(List<Path> frames, Path gif, int delay) throws IOException {
         ImageWriter writer = gifWriter();
         try (ImageOutputStream out = ImageIO.createImageOutputStream(Files.newOutputStream(gif))) {
             writer.setOutput(out);
@@ -84,8 +94,6 @@ final class GifWriter {
                 writer.writeToSequence(new IIOImage(image, null, metadata), param);
             }
             writer.endWriteSequence();
-        } catch (IOException e) {
-            throw new UncheckedIOException(Printable.of(gif + ": cannot write the GIF: " + e.getMessage()), e);
         } finally {
             writer.dispose();
         }

@@ -7,19 +7,17 @@ import java.io.UncheckedIOException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.FileSystemException;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeSet;
-import java.util.concurrent.atomic.AtomicLong;
 
 import javax.imageio.ImageIO;
 
 import primitives.Color;
 import primitives.FileNames;
+import primitives.FileReplacement;
 import primitives.Printable;
 
 import static primitives.Util.requireNonNull;
@@ -42,9 +40,6 @@ public class ImageWriter {
             ".bmp", "bmp");
     /** The most pixels an image can hold: the longest array of ints. */
     public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
-
-    /** Numbers the temporary files of this process, so that two writes never share one. */
-    private static final AtomicLong TEMPORARY_COUNT = new AtomicLong();
 
     private final Path file;
     private final String format;
@@ -241,8 +236,7 @@ public class ImageWriter {
     public static void checkOutput(Path file) {
         requireNonNull(file, "image file");
         try {
-            prepareFolder(file);
-            Files.delete(Files.createFile(temporaryPath(file)));
+            FileReplacement.checkWritable(file);
         } catch (IOException e) {
             throw cannotWrite(file, e);
         }
@@ -256,32 +250,13 @@ public class ImageWriter {
      */
     public void writeToImage() {
         try {
-            prepareFolder(file);
-            Path temporary = temporaryPath(file);
-            temporary.toFile().deleteOnExit(); // not left behind by Ctrl-C while writing
-            try {
+            FileReplacement.replace(file, temporary -> {
                 if (!ImageIO.write(image, format, temporary.toFile()))
                     throw new IOException("no " + format + " writer available");
-                Files.move(temporary, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } finally {
-                Files.deleteIfExists(temporary);
-            }
+            });
         } catch (IOException e) {
             throw cannotWrite(file, e);
         }
-    }
-
-    /** Creates the file's folder when missing; the file itself must not be a folder. */
-    private static void prepareFolder(Path file) throws IOException {
-        Files.createDirectories(file.toAbsolutePath().getParent());
-        if (Files.isDirectory(file))
-            throw new IOException("it is a folder");
-    }
-
-    /** A new temporary file beside the image, hidden and unique to this write. */
-    private static Path temporaryPath(Path file) {
-        return file.resolveSibling("." + file.getFileName() + "." + ProcessHandle.current().pid() + "-"
-                + TEMPORARY_COUNT.incrementAndGet() + ".tmp");
     }
 
     /**

@@ -29,6 +29,7 @@ import lighting.PointLight;
 import lighting.SpotLight;
 import primitives.CheckerTexture;
 import primitives.Color;
+import primitives.FileReplacement;
 import primitives.ImageTexture;
 import primitives.Material;
 import primitives.Point3D;
@@ -73,7 +74,8 @@ public final class SceneWriter {
     }
 
     /**
-     * Writes a picture into a scene file, creating the file's folders.
+     * Writes a picture into a scene file, creating the file's folders; an old file is replaced whole
+     * ({@link FileReplacement}).
      *
      * @param picture the picture
      * @param file    the scene file (normally named {@code <picture name>.xml})
@@ -84,10 +86,7 @@ public final class SceneWriter {
         requireNonNull(file, "scene file");
         String xml = toXml(picture, file.toAbsolutePath().getParent());
         try {
-            Path folder = file.toAbsolutePath().getParent();
-            if (folder != null)
-                Files.createDirectories(folder);
-            Files.writeString(file, xml, StandardCharsets.UTF_8);
+            FileReplacement.replace(file, f -> Files.writeString(f, xml, StandardCharsets.UTF_8));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the scene file " + file + ": " + e, e);
         }

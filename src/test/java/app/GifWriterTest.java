@@ -74,11 +74,15 @@ class GifWriterTest {
         byte[] first = Files.readAllBytes(gif);
         GifWriter.write(frames, gif, 24);
         assertArrayEquals(first, Files.readAllBytes(gif), "TC02: the same frames must give the same bytes");
-        // TC03: a frame of another size: refused, naming it
+        // TC03: a frame of another size: refused, naming it; the GIF already there is left as it was
         Path wide = TestFiles.writePng(FOLDER, "wide.png", 9, new int[9 * 6]);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> GifWriter.write(List.of(frame(0), wide), FOLDER.resolve("mixed.gif"), 24), "TC03: two sizes");
+                () -> GifWriter.write(List.of(frame(0), wide), gif, 24), "TC03: two sizes");
         assertMessage(e, "wide.png: the frame is 9 x 6 pixels, the first one 8 x 6", "TC03");
+        assertArrayEquals(first, Files.readAllBytes(gif), "TC03: a failed write must leave the old GIF");
+        try (var files = Files.list(FOLDER)) {
+            assertTrue(files.noneMatch(f -> f.toString().endsWith(".tmp")), "TC03: a temporary file was left");
+        }
 
         // ===== Boundary Values Tests =====
         // TC11: one frame at 1 fps: one frame, delay 100
