@@ -209,6 +209,18 @@ public abstract class RayTracerBase {
     }
 
     /**
+     * The time the rendering threads of this ray tracer spent tracing the shadow rays of soft-shadow
+     * bundles that were neither open nor blocked: the rays that walk the hierarchy (as packets, or
+     * one by one against a gather). Elapsed time on each thread, summed: on a busy machine it also
+     * counts the time a thread waited for a core.
+     *
+     * @return the nanoseconds so far
+     */
+    public long getBundleTracingNanos() {
+        return sum(state -> state.bundleTracingNanos);
+    }
+
+    /**
      * The reflected and refracted rays spread by glossy and blurry surfaces (the sharp rays of
      * mirrors and clear glass are not counted).
      *

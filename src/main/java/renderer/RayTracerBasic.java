@@ -414,6 +414,8 @@ public class RayTracerBasic extends RayTracerBase {
             state.random.skip(2L * grid.getSamplesCount());
         else
             grid.sampleUnchecked(state.random, samples);
+        // two clock reads (some 50 ns) per traced bundle: under 1 % of tracing 9 × 9 + 1 rays
+        long start = square.isResolved() ? 0 : System.nanoTime();
         int outline = grid.getOutlineCount();
         double ktr = square.visibility(centreDistance, samples, outline);
         int rays = 1 + outline;
@@ -427,6 +429,8 @@ public class RayTracerBasic extends RayTracerBase {
             state.openShadowRays += rays;
         if (square.isBlocked())
             state.blockedShadowRays += rays;
+        if (!square.isResolved())
+            state.bundleTracingNanos += System.nanoTime() - start;
         return ktr / rays;
     }
 }

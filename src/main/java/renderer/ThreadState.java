@@ -22,6 +22,8 @@ final class ThreadState {
     long openShadowRays;
     /** The shadow rays of this thread whose bundle a closed opaque mesh blocked whole. */
     long blockedShadowRays;
+    /** The nanoseconds this thread spent tracing the rays of soft-shadow bundles neither open nor blocked. */
+    long bundleTracingNanos;
     /** The reflected and refracted rays spread by glossy and blurry surfaces on this thread. */
     long spreadRays;
     /** Whether this thread is tracing the rays of a glossy or blurry beam (which spread no beam of their own). */

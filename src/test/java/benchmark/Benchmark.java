@@ -50,7 +50,10 @@ import testutil.TestMeshes;
  * <li>the traced shadow rays of a frame (neither open nor blocked), the median CPU time of a frame (all
  * the process's threads, as the operating system counts it, in steps of 10 ms on Linux: on a shared
  * machine it counts the time the render ran, not the time it waited) and that time per traced ray,
- * an upper bound of a traced ray's cost, since it includes the primary rays and the shading;</li>
+ * an upper bound of a traced ray's cost, since it includes the primary rays and the shading; then
+ * the time the threads spent tracing those rays alone (their packets and gathered tests, not the
+ * gathers that sorted the bundles; elapsed time on each thread, summed), its share of the CPU time
+ * and that time per traced ray;</li>
  * <li>with glossy or blurry surfaces, the spread rays of a frame.</li>
  * </ul>
  * <p>
@@ -199,12 +202,14 @@ public final class Benchmark {
         }
         double[] seconds = new double[frames];
         double[] cpuSeconds = new double[frames];
+        double[] tracingSeconds = new double[frames];
         long[] counts = null;
         for (int f = 0; f < frames; ++f) {
             long cpuStart = processCpuNanos();
             seconds[f] = frame.timedRender();
             cpuSeconds[f] = (processCpuNanos() - cpuStart) / 1e9;
             counts = frame.counts();
+            tracingSeconds[f] = counts[5] / 1e9;
         }
         frame.render.writeToImage();
         if (warmup == 0)
@@ -222,9 +227,11 @@ public final class Benchmark {
                 name, frame.size * frame.size, primary, shadow, 100.0 * open / shadow, 100.0 * blocked / shadow, first,
                 median, format(seconds), shadow / median / 1e6, (primary + shadow + spread) / median / 1e6);
         double cpu = median(cpuSeconds);
+        double tracing = median(tracingSeconds);
         System.out.printf("%s: %d traced shadow rays/frame, median %.3f s of CPU time/frame, %.0f ns of it per"
-                        + " traced shadow ray (shading and primary rays included)%n",
-                name, traced, cpu, cpu * 1e9 / traced);
+                        + " traced shadow ray (shading and primary rays included); %.3f s/frame tracing them"
+                        + " (%.0f %% of the CPU time), %.0f ns a ray%n",
+                name, traced, cpu, cpu * 1e9 / traced, tracing, 100 * tracing / cpu, tracing * 1e9 / traced);
         if (spread > 0)
             System.out.printf("%s: %d spread rays/frame%n", name, spread);
     }
@@ -271,7 +278,7 @@ public final class Benchmark {
             return (System.nanoTime() - start) / 1e9;
         }
 
-        /** {@return the primary, shadow, open, blocked and spread rays of the last frame} */
+        /** {@return the primary, shadow, open, blocked and spread rays of the last frame, and its bundles' tracing ns} */
         long[] counts() {
             long[] after = totals();
             for (int k = 0; k < after.length; ++k)
@@ -282,7 +289,7 @@ public final class Benchmark {
         private long[] totals() {
             return new long[] { rayTracer.getPrimaryRaysCount(), rayTracer.getShadowRaysCount(),
                     rayTracer.getOpenShadowRaysCount(), rayTracer.getBlockedShadowRaysCount(),
-                    rayTracer.getSpreadRaysCount() };
+                    rayTracer.getSpreadRaysCount(), rayTracer.getBundleTracingNanos() };
         }
     }
 

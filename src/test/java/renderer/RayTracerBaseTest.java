@@ -44,6 +44,7 @@ class RayTracerBaseTest {
         assertEquals(0, tracer.getOpenShadowRaysCount(), "TC04: the open shadow ray count must start at 0");
         assertEquals(0, tracer.getBlockedShadowRaysCount(), "TC04: the blocked shadow ray count must start at 0");
         assertEquals(0, tracer.getSpreadRaysCount(), "TC04: the spread ray count must start at 0");
+        assertEquals(0, tracer.getBundleTracingNanos(), "TC04: the bundles' tracing time must start at 0");
         // TC05: sqrtGlossRays 5 (= DEFAULT_SQRT_GLOSS_RAYS), a 5 × 5 gloss grid
         assertEquals(5, RayTracerBase.DEFAULT_SQRT_GLOSS_RAYS, "TC05: the default sqrtGlossRays must be 5");
         assertEquals(5, tracer.getSqrtGlossRays(), "TC05: wrong default sqrtGlossRays");

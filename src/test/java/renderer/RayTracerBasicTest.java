@@ -903,6 +903,30 @@ class RayTracerBasicTest {
     }
 
     /**
+     * Test method for {@link RayTracerBase#getBundleTracingNanos()}: only bundles whose rays are
+     * traced take time on the clock.
+     */
+    @Test
+    void testBundleTracingNanos() {
+        PointLight light = squareLight();
+        // ===== Equivalence Partitions Tests =====
+        // TC01: nothing in the way: the bundle is open, no time counted
+        RayTracerBasic open = softTracer(9, halfPlane(-500, 50, new Material()));
+        shadowFactor(open, light, 0);
+        assertEquals(0, open.getBundleTracingNanos(), "TC01: an open bundle traces no ray");
+        // TC02: a sheet half across the light's square: the rays are traced, time counted
+        RayTracerBasic half = softTracer(9, halfPlane(0, 50, new Material()));
+        shadowFactor(half, light, 0);
+        assertTrue(half.getBundleTracingNanos() > 0, "TC02: a traced bundle must take time");
+        // ===== Boundary Values Tests =====
+        // TC11: soft shadows off: a single shadow ray is no bundle, no time counted
+        RayTracerBasic hard = softTracer(9, halfPlane(0, 50, new Material()));
+        hard.setSoftShadows(false);
+        shadowFactor(hard, light, 0);
+        assertEquals(0, hard.getBundleTracingNanos(), "TC11: a single shadow ray is no bundle");
+    }
+
+    /**
      * Test method for {@link RayTracerBasic#calcSoftShadows} with adaptive sampling: the outline first,
      * the whole grid only where the outline's rays disagree.
      */
