@@ -266,16 +266,32 @@ public class RayTracerBasic extends RayTracerBase {
             }
         }
         double kkr = k * kR;
-        if (kkr > MIN_CALC_COLOR_K)
-            color = calcSpreadEffect(geoPoint.point, constructReflectedRay(geoPoint.point, v, n), n,
-                    material.getKg(), level, kR, kkr, state);
+        if (kkr > MIN_CALC_COLOR_K) {
+            Ray reflected = constructReflectedRay(geoPoint.point, v, n);
+            color = calcSpreadEffect(reflected, spreadSquare(geoPoint.point, reflected, n, material.getKg()), level,
+                    kR, kkr, state);
+        }
         double kkt = k * kT;
         if (kkt > MIN_CALC_COLOR_K) {
             Ray refracted = refraction == null ? constructRefractedRay(geoPoint.point, v, n)
                     : new Ray(geoPoint.point, refraction.direction(), n);
-            color = color.add(calcSpreadEffect(geoPoint.point, refracted, n, material.getKb(), level, kT, kkt, state));
+            color = color.add(calcSpreadEffect(refracted, spreadSquare(geoPoint.point, refracted, n, material.getKb()),
+                    level, kT, kkt, state));
         }
         return color;
+    }
+
+    /**
+     * The square a material spreads a sharp reflected or refracted ray over, or null when it does not.
+     *
+     * @param point    the surface point
+     * @param sharpRay the sharp ray
+     * @param n        the surface normal at the point
+     * @param spread   the material's kG or kB: the half-edge of the square at unit distance, 0 for none
+     * @return the square, or null for spread 0
+     */
+    private static SpreadSquare spreadSquare(Point3D point, Ray sharpRay, Vector n, double spread) {
+        return spread == 0 ? null : new SpreadSquare(point, sharpRay, n, spread);
     }
 
     /**
@@ -285,21 +301,18 @@ public class RayTracerBasic extends RayTracerBase {
      * met by one of those rays traces one jittered ray, so a pixel's rays grow linearly with the
      * recursion's depth, and the beam's average still takes in every surface's spread.
      *
-     * @param point    the surface point
      * @param sharpRay the sharp reflected or refracted ray
-     * @param n        the surface normal at the point
-     * @param spread   the material's kG or kB: the half-edge of the square at unit distance
+     * @param square   the square the material spreads it over, or null when it does not
      * @param level    the recursion level of the point
      * @param kx       the material's kR or kT
      * @param kkx      the accumulated factor of the reflected or refracted light
      * @param state    the calling thread's state
      * @return the reflected or refracted colour, scaled by kx
      */
-    private Color calcSpreadEffect(Point3D point, Ray sharpRay, Vector n, double spread, int level, double kx,
-                                   double kkx, ThreadState state) {
-        if (spread == 0)
+    private Color calcSpreadEffect(Ray sharpRay, SpreadSquare square, int level, double kx, double kkx,
+                                   ThreadState state) {
+        if (square == null)
             return calcGlobalEffect(sharpRay, level, kx, kkx, state);
-        SpreadSquare square = new SpreadSquare(point, sharpRay, n, spread);
         if (state.inSpreadBeam) {
             double[] sample = state.spreadPoint();
             SINGLE_SPREAD_RAY.sampleUnchecked(state.random, sample);
