@@ -250,6 +250,20 @@ public final class BoundingVolumeHierarchy {
     }
 
     /**
+     * Whether any ray of a bundle given in another space may meet the bodies: its pyramid is carried
+     * into the bodies' space ({@link MappedFrustum}) and the tree walked with it until a body that may
+     * meet it is found, as a gather finds bodies. An instance answers {@link Geometry#mayMeet} so.
+     *
+     * @param frustum the bundle's pyramid, in the space the map comes from (an instance's world)
+     * @param toBody  the map into the bodies' space, 12 numbers (see {@link primitives.Transform#toArray})
+     * @return false only when no ray of the bundle can meet any body
+     */
+    public boolean mayMeet(ShadowFrustum frustum, double[] toBody) {
+        Query query = threadQuery();
+        return !query.mapping.set(query.frustum, frustum, toBody) || bundleGather.anyMeets(query);
+    }
+
+    /**
      * The share of light that passes the bodies along a ray given in another space, within its
      * distance: the product of the {@code kT} of every intersection, each body's own. The running
      * product of the given ray (its transmittance so far and its limit) sets where the walk may stop.

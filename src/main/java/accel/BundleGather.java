@@ -98,6 +98,44 @@ final class BundleGather {
     }
 
     /**
+     * Whether any body may meet the query's frustum, unlike {@link #gather} stopping at the first one
+     * found: a walk of the nodes whose boxes meet it.
+     *
+     * @param query this thread's scratch space, its frustum set
+     * @return false only when no ray of the bundle can meet any body
+     */
+    boolean anyMeets(Query query) {
+        ShadowFrustum frustum = query.frustum;
+        for (Geometry body : bodies.unbounded)
+            if (body.mayMeet(frustum))
+                return true;
+        if (bodies.others.length > 0)
+            return true;
+        if (nodes.count == 0 || !frustum.meetsBox(nodes.bounds, 0))
+            return false;
+        int[] stack = query.stack;
+        int top = 0;
+        stack[top++] = 0;
+        // every node on the stack meets the frustum; a node's children that do are pushed, left on top
+        while (top > 0) {
+            int node = stack[--top];
+            int first = nodes.links[2 * node];
+            int count = nodes.links[2 * node + 1];
+            if (count >= 0) {
+                for (int b = first; b < first + count; ++b)
+                    if (bodies.meets(frustum, b))
+                        return true;
+                continue;
+            }
+            if (frustum.meetsBox(nodes.bounds, 6 * first + 6))
+                stack[top++] = first + 1;
+            if (frustum.meetsBox(nodes.bounds, 6 * first))
+                stack[top++] = first;
+        }
+        return false;
+    }
+
+    /**
      * Adds a leaf's bodies that may meet the frustum ({@link LeafBodies#meets}), a mesh's triangle
      * with the numbers of its test; false when there is no room for them, or when the closed meshes,
      * tried at the first body found, block the bundle.

@@ -23,6 +23,8 @@ public final class Query {
     /** Where the ray of a closest-hit walk enters the box of each node on the stack. */
     final double[] entries;
     final ShadowFrustum frustum = new ShadowFrustum();
+    /** Carries another hierarchy's bundle into this one's space, into {@link #frustum} (an instance's body's). */
+    final MappedFrustum mapping = new MappedFrustum();
     /**
      * The tree's bodies the gather found, in leaf order; a mesh's triangle is −1 here, its numbers in
      * {@link #gatheredTriangles}.

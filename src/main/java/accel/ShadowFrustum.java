@@ -53,6 +53,8 @@ public final class ShadowFrustum {
     private final double[] vertices = new double[15];
     /** The box around the vertices, {minX, minY, minZ, maxX, maxY, maxZ}. */
     private final double[] hull = new double[6];
+    /** How far the rays may stray from the pyramid, as the last {@link #set} was given it. */
+    private double thickness;
     /** The thickness plus the margin: how far outside a face a box or plane must be. */
     private double margin;
     /** The margin alone, for rounding: how far behind a ray's origin a triangle must be ({@link #originsBehind}). */
@@ -96,6 +98,7 @@ public final class ShadowFrustum {
         if (!(thickness >= 0))
             throw new IllegalArgumentException("the thickness of a shadow frustum must be 0 or more, got " + thickness);
         setVertices(apex, base);
+        this.thickness = thickness;
         double size = setHull();
         rounding = MARGIN * size;
         margin = rounding + thickness;
@@ -433,6 +436,26 @@ public final class ShadowFrustum {
     /** {@return the thickness plus the margin: how far inside a body's core a ray must pass to count} */
     double margin() {
         return margin;
+    }
+
+    /** {@return how far the rays may stray from the pyramid, as the last {@link #set} was given it} */
+    double thickness() {
+        return thickness;
+    }
+
+    /**
+     * The direction of the back face asked for since the last {@link #set} ({@link #setBackFace}).
+     *
+     * @param direction where its three numbers go
+     * @return false, with nothing written, when none was asked for, or it could not be placed
+     */
+    boolean backFaceDirection(double[] direction) {
+        if (backFace == NO_BACK_FACE)
+            return false;
+        direction[0] = backX;
+        direction[1] = backY;
+        direction[2] = backZ;
+        return true;
     }
 
     /** {@return whether the last {@link #set} succeeded} */

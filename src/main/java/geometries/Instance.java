@@ -2,6 +2,7 @@ package geometries;
 
 import accel.BoundingVolumeHierarchy;
 import accel.RayState;
+import accel.ShadowFrustum;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -157,6 +158,15 @@ public final class Instance extends Geometry {
     @Override
     public double transmittance(RayState ray) {
         return walked().transmittance(ray, toBody);
+    }
+
+    /**
+     * Whether a bundle may meet the body: its pyramid carried into the body's space, the body's tree
+     * walked with it. So a bundle that passes by the body's triangles, though through its box, is open.
+     */
+    @Override
+    public boolean mayMeet(ShadowFrustum frustum) {
+        return walked().mayMeet(frustum, toBody);
     }
 
     /** {@return the body's nearest hit on the ray, carried to the world (the part is not used)} */

@@ -23,11 +23,13 @@ import org.junit.jupiter.api.Test;
 import geometries.Cylinder;
 import geometries.Geometry;
 import geometries.Geometries;
+import geometries.Instance;
 import geometries.Intersectable.GeoPoint;
 import geometries.Intersectable;
 import geometries.Plane;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import geometries.Tube;
 import primitives.Point3D;
 import primitives.Ray;
@@ -35,6 +37,7 @@ import primitives.Transform;
 import primitives.Vector;
 import testutil.TestBundles;
 import testutil.TestInstances;
+import testutil.TestMeshes;
 import testutil.TestRandom;
 import testutil.TestScenes.TestScene;
 
@@ -284,13 +287,18 @@ class BoundingVolumeHierarchyTest {
         // ===== Equivalence Partitions Tests =====
         // TC01: 300 bundles from random points toward the light's square over the crowd of instances, 16
         // rays each: one by one after the gather, and as a packet, the copy's transmittance of each ray
+        // TC02: a bundle found open lets each ray through the copy whole (transmittance 1)
         for (int bundle = 0; bundle < 300; ++bundle) {
             Point3D apex = TestRandom.randomPoint(rnd, new Point3D(0, 0, 0), 8);
             List<Double> distances = new java.util.ArrayList<>();
             List<Ray> rays = TestInstances.raysToLight(rnd, apex, 16, distances);
             if (!TestBundles.gather(instanced, query, apex, TestInstances.LIGHT, TestInstances.LIGHT_A,
-                    TestInstances.LIGHT_B))
+                    TestInstances.LIGHT_B)) {
+                for (int r = 0; r < rays.size(); ++r)
+                    assertEquals(1, transmittance(inPlace, rays.get(r), distances.get(r), MIN_K, copyQuery),
+                            "TC02: open bundle " + bundle + " ray " + r + " " + rays.get(r));
                 continue;
+            }
             if (query.isSubtreeGathered())
                 ++subtrees;
             for (int r = 0; r < rays.size(); ++r)
@@ -305,6 +313,18 @@ class BoundingVolumeHierarchyTest {
         // ===== Boundary Values Tests =====
         // TC11: some bundles meet more instances than a gather keeps one by one: their packets walk a subtree
         assertTrue(subtrees > 0, "TC11: no bundle kept a subtree of instances");
+        // TC12: a cube turned 45° about z: a thin bundle up through a corner of its box, past the cube,
+        // is open; the same bundle up through the cube's middle is not
+        TriangleMesh cube = TestMeshes.cube(-0.5, -0.5, -0.5, 1);
+        BoundingVolumeHierarchy turned = BoundingVolumeHierarchy.build(new Geometries(new Instance(cube,
+                Transform.rotateZ(45))));
+        Query turnedQuery = turned.newQuery();
+        Vector a = new Vector(0.01, 0, 0);
+        Vector b = new Vector(0, 0.01, 0);
+        assertFalse(TestBundles.gather(turned, turnedQuery, new Point3D(0.65, 0.65, -5), new Point3D(0.65, 0.65, 5), a,
+                b), "TC12: a bundle past the turned cube, through its box, must be open");
+        assertTrue(TestBundles.gather(turned, turnedQuery, new Point3D(0, 0, -5), new Point3D(0, 0, 5), a, b),
+                "TC12: a bundle through the turned cube must not be open");
     }
 
     /**

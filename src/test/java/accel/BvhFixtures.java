@@ -77,6 +77,9 @@ final class BvhFixtures {
         int darkened;
     }
 
+    /** The identity's 12 numbers, for {@link BoundingVolumeHierarchy#mayMeet(ShadowFrustum, double[])}. */
+    private static final double[] IDENTITY_MAP = primitives.Transform.IDENTITY.toArray();
+
     /**
      * Traces random bundles through a scene: for every bundle, every ray from (near) the apex to
      * (near) a random point of the square has the same gathered transmittance as its transmittance
@@ -132,6 +135,8 @@ final class BvhFixtures {
             Supplier<String> bundleLabel = () -> tc + " bundle " + bundleNumber + " (apex " + origin + ", c " + c
                     + ", a " + a + ", b " + b + ", thickness " + thick + ", gathered " + found + ", " + meeting
                     + " boxes meet)";
+            // the walk that stops at the first body, with the pyramid carried onto itself, finds one when the gather does
+            assertEquals(found, bvh.mayMeet(frustum, IDENTITY_MAP), () -> bundleLabel.get() + ": mayMeet disagrees");
             if (!found) {
                 // a body that may meet the frustum (its box and its own test) is in nodes whose boxes meet it: gathered
                 assertEquals(0, meeting, () -> bundleLabel.get() + ": nothing gathered though bodies may meet");

@@ -9,6 +9,7 @@ import java.util.List;
 
 import accel.BoundingVolumeHierarchy;
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.Plane;
 import geometries.Sphere;
 import geometries.Triangle;
@@ -17,6 +18,7 @@ import lighting.PointLight;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point3D;
+import primitives.Transform;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.ImageWriter;
@@ -34,7 +36,9 @@ import testutil.TestMeshes;
  * (a forest of 20 × 60 small spheres, 400 × 400, the same light); for the picture improvements, scene S
  * at 400 × 400 seen through an aperture (SDOF: edge 20, focused on the origin, 3 × 3 aperture rays per
  * pixel), with 4 × 4 anti-aliasing (SAA), with it adaptive (SAAA), and with a glossy floor (SG: kR 0.5
- * and kG 0.05, 5 × 5 spread rays at each floor point). Per scene it prints:
+ * and kG 0.05, 5 × 5 spread rays at each floor point); M1 (M's triangles as one mesh) and MS (as course-style
+ * triangles); {@code obj:PATH}, an OBJ file's mesh standing on S's floor, and {@code inst:PATH}, the same
+ * mesh placed by an {@link Instance} (scaled and moved) instead of built in place. Per scene it prints:
  * <ul>
  * <li>the bodies in the hierarchy, the seconds of building it (the median of {@value #BUILDS}
  * builds on the render's threads, outside any render), and the bytes per body of the scene and its
@@ -70,6 +74,8 @@ public final class Benchmark {
             "SAA", "SAAA", "SG");
     /** The prefix of a real-mesh scene's name: the rest is the OBJ file's path. */
     private static final String OBJ_PREFIX = "obj:";
+    /** The prefix of a real-mesh scene's name whose mesh is placed by an instance. */
+    private static final String INSTANCE_PREFIX = "inst:";
     /** A real mesh's largest extent, in scene units: about half the view plane's 150. */
     private static final double OBJ_EXTENT = 75;
     /** The floor's height, which S's bodies and a real mesh stand on. */
@@ -139,14 +145,15 @@ public final class Benchmark {
         }
         List<String> scenes = sceneOption.equals("all") ? List.of("S", "M") : List.of(sceneOption.split(","));
         for (String name : scenes)
-            if (!SCENES.contains(name) && !name.startsWith(OBJ_PREFIX))
-                usage("--scene must be all, among " + String.join(", ", SCENES) + " or obj:PATH, got " + name);
+            if (!SCENES.contains(name) && objPath(name) == null)
+                usage("--scene must be all, among " + String.join(", ", SCENES) + ", obj:PATH or inst:PATH, got "
+                        + name);
         int threadsUsed = threads == 0 ? Runtime.getRuntime().availableProcessors() : threads;
         System.out.printf("JVM %s (%s), %d available processors, %d threads, %d warm-up + %d timed frames%n",
                 Runtime.version(), System.getProperty("java.vm.name"), Runtime.getRuntime().availableProcessors(),
                 threadsUsed, warmup, frames);
         for (String name : scenes) {
-            if (name.startsWith(OBJ_PREFIX) && !Files.isReadable(Path.of(name.substring(OBJ_PREFIX.length())))) {
+            if (objPath(name) != null && !Files.isReadable(objPath(name))) {
                 System.out.printf("%s: skipped, no such file%n", name);
                 continue;
             }
@@ -293,12 +300,21 @@ public final class Benchmark {
         }
     }
 
-    /** {@return a file name for a scene's picture: a real mesh's is its OBJ file's name} */
+    /** {@return the OBJ file of a real-mesh scene ({@code obj:PATH} or {@code inst:PATH}), or null for another} */
+    private static Path objPath(String name) {
+        for (String prefix : List.of(OBJ_PREFIX, INSTANCE_PREFIX))
+            if (name.startsWith(prefix))
+                return Path.of(name.substring(prefix.length()));
+        return null;
+    }
+
+    /** {@return a file name for a scene's picture: a real mesh's is its OBJ file's name after its kind} */
     private static String outputName(String name) {
-        if (!name.startsWith(OBJ_PREFIX))
+        Path obj = objPath(name);
+        if (obj == null)
             return name;
-        String file = Path.of(name.substring(OBJ_PREFIX.length())).getFileName().toString();
-        return "obj-" + file.replaceFirst("\\.obj$", "");
+        String kind = name.startsWith(OBJ_PREFIX) ? "obj-" : "inst-";
+        return kind + obj.getFileName().toString().replaceFirst("\\.obj$", "");
     }
 
     /**
@@ -331,7 +347,7 @@ public final class Benchmark {
      * @return its size in pixels
      */
     private static int sizeOf(String name) {
-        return name.equals("S") || name.startsWith("M") || name.startsWith(OBJ_PREFIX) ? SIZE : SMALL_SIZE;
+        return name.equals("S") || name.startsWith("M") || objPath(name) != null ? SIZE : SMALL_SIZE;
     }
 
     /**
@@ -347,7 +363,7 @@ public final class Benchmark {
             case "MS" -> courseStyle();
             case "F2" -> forest();
             case "SG" -> glossyFloor();
-            default -> name.startsWith(OBJ_PREFIX) ? realMesh(name) : terrain(name, Integer.parseInt(name.substring(1).replace("k", "000").replace("M", "000000")));
+            default -> objPath(name) != null ? realMesh(name) : terrain(name, Integer.parseInt(name.substring(1).replace("k", "000").replace("M", "000000")));
         };
     }
 
@@ -429,13 +445,14 @@ public final class Benchmark {
 
     /**
      * Builds a real-mesh scene: an OBJ file's mesh standing on the floor, centred, its largest extent
-     * {@value #OBJ_EXTENT}, under a light of edge {@value #OBJ_LIGHT_EDGE}.
+     * {@value #OBJ_EXTENT}, under a light of edge {@value #OBJ_LIGHT_EDGE}: built in place, or for
+     * {@value #INSTANCE_PREFIX}, the mesh as read placed by an instance that scales and moves it.
      *
-     * @param name {@value #OBJ_PREFIX} and the file's path
+     * @param name {@value #OBJ_PREFIX} or {@value #INSTANCE_PREFIX} and the file's path
      * @return the scene
      */
     private static Scene realMesh(String name) {
-        Path file = Path.of(name.substring(OBJ_PREFIX.length()));
+        Path file = objPath(name);
         TriangleMesh raw = ObjMesh.readMesh(file);
         double[] low = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY };
         double[] high = { Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
@@ -451,9 +468,12 @@ public final class Benchmark {
         double scale = OBJ_EXTENT / extent;
         Point3D position = new Point3D(-scale * (low[0] + high[0]) / 2, FLOOR_Y - scale * low[1],
                 -scale * (low[2] + high[2]) / 2);
-        TriangleMesh mesh = ObjMesh.readMesh(file, scale, position);
         Scene scene = floorAndLight(name, OBJ_LIGHT_EDGE, OBJ_LIGHT);
-        scene.geometries.add(mesh.setMaterial(DIFFUSE));
+        TriangleMesh mesh = name.startsWith(INSTANCE_PREFIX) ? raw : ObjMesh.readMesh(file, scale, position);
+        mesh.setMaterial(DIFFUSE);
+        scene.geometries.add(name.startsWith(OBJ_PREFIX) ? mesh : new Instance(mesh,
+                Transform.scale(scale).then(Transform.translate(new Vector(position.getX(), position.getY(),
+                        position.getZ())))));
         System.out.printf("%s: %d triangles, scaled by %.4g%n", name, mesh.getTrianglesCount(), scale);
         return scene;
     }
@@ -556,7 +576,7 @@ public final class Benchmark {
      */
     private static <T> T usage(String problem) {
         System.err.println("benchmark: " + problem);
-        System.err.println("usage: Benchmark [--scene S|M|M1|MS|G10k|G100k|G1M|F2|SDOF|SAA|SAAA|SG|obj:PATH|all,"
+        System.err.println("usage: Benchmark [--scene S|M|M1|MS|G10k|G100k|G1M|F2|SDOF|SAA|SAAA|SG|obj:PATH|inst:PATH|all,"
                 + " or several"
                 + " separated by commas]"
                 + " [--frames N] [--warmup N] [--threads N]");

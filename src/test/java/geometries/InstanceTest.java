@@ -21,7 +21,9 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 import accel.BoundingVolumeHierarchy;
+import benchmark.SphereMesh;
 import accel.RayState;
+import accel.ShadowFrustum;
 import geometries.Intersectable.GeoPoint;
 import lighting.PointLight;
 import primitives.Color;
@@ -52,6 +54,65 @@ class InstanceTest {
     /** {@return the nearest hit of a body's own intersections, or null} */
     private static GeoPoint nearest(Intersectable body, Ray ray) {
         return ray.findClosestGeoPoint(body.findGeoIntersections(ray));
+    }
+
+    /** {@return a frustum set to the pyramid from an apex to the square c ± a ± b, 0 thick} */
+    private static ShadowFrustum pyramid(Point3D apex, Point3D c, Vector a, Vector b) {
+        ShadowFrustum frustum = new ShadowFrustum();
+        assertTrue(frustum.set(new double[] { apex.getX(), apex.getY(), apex.getZ() }, new double[] { c.getX(),
+                c.getY(), c.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ() }, 0),
+                "the pyramid must not be flat");
+        return frustum;
+    }
+
+    /**
+     * The bundle of a point on top of a placed body, where a ray down from (0.05, 0.03, 10) meets it:
+     * from 0.001 off the surface along its normal to a square of half-side 50 across the normal, 10 above,
+     * told the surface it leaves (its back face across the normal).
+     */
+    private static ShadowFrustum bundleAbove(Instance body) {
+        GeoPoint top = nearest(body, new Ray(new Point3D(0.05, 0.03, 10), DOWN));
+        Vector n = top.getNormal();
+        Vector a = n.crossProduct(new Vector(1, 0, 0)).normalize().scale(50);
+        Vector b = n.crossProduct(a).normalize().scale(50);
+        ShadowFrustum frustum = pyramid(top.point.add(n.scale(0.001)), top.point.add(n.scale(10)), a, b);
+        frustum.setLeaving(1, top.point.getX(), top.point.getY(), top.point.getZ(), 0.001 * n.getX(),
+                0.001 * n.getY(), 0.001 * n.getZ());
+        return frustum;
+    }
+
+    /** Test method for {@link Instance#mayMeet(ShadowFrustum)}: the bundle carried into the body's space. */
+    @Test
+    void testMayMeet() {
+        TriangleMesh cube = TestMeshes.cube(-0.5, -0.5, -0.5, 1);
+        Instance turned = new Instance(cube, Transform.rotateZ(45));
+        Vector a = new Vector(0.01, 0, 0);
+        Vector b = new Vector(0, 0.01, 0);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a thin bundle up through the turned cube: true
+        assertTrue(turned.mayMeet(pyramid(new Point3D(0, 0, -5), new Point3D(0, 0, 5), a, b)),
+                "TC01: a bundle through the body must meet it");
+        // TC02: the same bundle through a corner of the cube's box (|x| + |y| ≤ 0.71 inside the cube): false
+        assertFalse(turned.mayMeet(pyramid(new Point3D(0.65, 0.65, -5), new Point3D(0.65, 0.65, 5), a, b)),
+                "TC02: a bundle past the body, through its box, must not meet it");
+        // TC03: a bundle that leaves the top of a sphere mesh stretched to an ellipsoid and raised, toward a
+        // wide square above, told the surface it leaves: no triangle of the body meets it, false
+        TriangleMesh ball = SphereMesh.mesh(Point3D.ZERO, 1, 12, 24);
+        Instance raised = new Instance(ball, Transform.scale(2, 1, 1).then(Transform.translate(new Vector(0, 0, 1))));
+        ShadowFrustum leaving = bundleAbove(raised);
+        assertTrue(leaving.hasBackFace(), "TC03: the bundle's back face must be placed");
+        assertFalse(raised.mayMeet(leaving), "TC03: the surface the bundle leaves must be set aside");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the same under a mirror (x → −x): the back face carried still sets the surface aside
+        Instance mirrored = new Instance(ball, Transform.scale(-2, 1, 1).then(Transform.translate(new Vector(0, 0, 1))));
+        ShadowFrustum mirroredLeaving = bundleAbove(mirrored);
+        assertTrue(mirroredLeaving.hasBackFace(), "TC11: the bundle's back face must be placed");
+        assertFalse(mirrored.mayMeet(mirroredLeaving), "TC11: a mirror must keep the surface aside");
+        // TC12: the thin bundle of TC01 ending at z = −2, before the cube: false
+        assertFalse(turned.mayMeet(pyramid(new Point3D(0, 0, -5), new Point3D(0, 0, -2), a, b)),
+                "TC12: a bundle that ends before the body must not meet it");
     }
 
     /** Test method for {@link Instance#Instance(Intersectable, Transform)}, {@link Instance#getBody()} and {@link Instance#getTransform()}. */
