@@ -4,6 +4,7 @@ import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.IntConsumer;
 
 import static primitives.Util.requireNonNull;
@@ -13,6 +14,9 @@ import static primitives.Util.requireNonNull;
  * the hierarchy's build alike.
  */
 public final class Parallel {
+    /** The longest the calling thread parks between looks at the threads it waits for. */
+    private static final long WAIT_NANOS = 1_000_000;
+
     /** Not instantiable. */
     private Parallel() {
     }
@@ -59,6 +63,8 @@ public final class Parallel {
                 }
             } catch (RuntimeException | Error e) { // thrown again by the calling thread
                 failure.compareAndSet(null, e);
+            } finally {
+                LockSupport.unpark(caller); // a helper's end wakes the caller's wait (joinAll)
             }
         };
         Thread[] helpers = new Thread[Math.max(0, Math.min(threads, count) - 1)];
@@ -79,21 +85,25 @@ public final class Parallel {
 
     /**
      * Waits for threads to end, whatever interrupts the wait, so that none is left running: an interruption
-     * of the wait stops them after their tasks under way, and sets the calling thread's flag again at the end.
+     * stops them after their tasks under way, and sets the calling thread's flag again at the end. The wait
+     * parks rather than joins: a join clears the flag before it throws, and a thread that looked in between
+     * would see neither the flag nor the stop. Here the stop is set before the flag is cleared.
      *
      * @param threads the threads
-     * @param stopped set when the wait is interrupted: the threads take no more tasks
+     * @param stopped set once the calling thread is seen interrupted: the threads take no more tasks
      */
     private static void joinAll(Thread[] threads, AtomicBoolean stopped) {
         boolean interrupted = false;
         for (Thread thread : threads)
-            while (thread.isAlive())
-                try {
-                    thread.join();
-                } catch (InterruptedException e) { // the flag is cleared: the threads see the stop instead
-                    interrupted = true;
+            while (thread.isAlive()) {
+                if (Thread.currentThread().isInterrupted()) {
                     stopped.set(true);
+                    Thread.interrupted(); // cleared so that the park waits; set again at the end
+                    interrupted = true;
                 }
+                // woken by each helper's end; the timeout covers one that ends between isAlive and the park
+                LockSupport.parkNanos(WAIT_NANOS);
+            }
         if (interrupted)
             Thread.currentThread().interrupt();
     }
