@@ -256,11 +256,12 @@ public final class BoundingVolumeHierarchy {
      *
      * @param frustum the bundle's pyramid, in the space the map comes from (an instance's world)
      * @param toBody  the map into the bodies' space, 12 numbers (see {@link primitives.Transform#toArray})
+     * @param toWorld its inverse, 12 numbers
      * @return false only when no ray of the bundle can meet any body
      */
-    public boolean mayMeet(ShadowFrustum frustum, double[] toBody) {
+    public boolean mayMeet(ShadowFrustum frustum, double[] toBody, double[] toWorld) {
         Query query = threadQuery();
-        return !query.mapping.set(query.frustum, frustum, toBody) || bundleGather.anyMeets(query);
+        return !query.mapping.set(query.frustum, frustum, toBody, toWorld) || bundleGather.anyMeets(query);
     }
 
     /**

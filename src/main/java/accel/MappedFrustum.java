@@ -4,8 +4,8 @@ package accel;
  * A bundle's pyramid carried into an instance's space by the instance's inverse transform, so that the
  * body can be asked in its own space whether any ray of the bundle may meet it. An affine map takes
  * the pyramid to a pyramid whose base is a parallelogram still, and every ray of the bundle to a ray
- * inside it; it stretches distances by at most its norm, so the thickness grows by that, and it
- * carries the back face's plane by its inverse transpose. The rays' origins, when the bundle leaves a
+ * inside it; it stretches distances by at most its norm, so the thickness grows by that, and the
+ * back face's plane goes by its inverse transpose (the transpose of the instance's own transform). The rays' origins, when the bundle leaves a
  * surface on both sides, are not carried: the body's tree then sets nothing aside behind them, which
  * keeps every answer conservative.
  */
@@ -20,10 +20,11 @@ final class MappedFrustum {
      * @param target the frustum to set
      * @param world  the bundle's pyramid, in the space the map comes from
      * @param m      the map, 12 numbers (see {@link primitives.Transform#toArray})
+     * @param back   the map's inverse, 12 numbers: its transpose carries the back face's direction
      * @return false when the bundle's pyramid is not set or the carried one is flat: target must then
      *         not be asked
      */
-    boolean set(ShadowFrustum target, ShadowFrustum world, double[] m) {
+    boolean set(ShadowFrustum target, ShadowFrustum world, double[] m, double[] back) {
         if (!world.isSet())
             return false;
         double[] v = world.vertices();
@@ -34,29 +35,15 @@ final class MappedFrustum {
         mapVector(m, (v[3] - v[12]) / 2, (v[4] - v[13]) / 2, (v[5] - v[14]) / 2, base, 6);
         if (!target.set(apex, base, world.thickness() * norm(m)))
             return false;
-        if (world.backFaceDirection(direction))
-            setBackFace(target, m);
+        if (world.backFaceDirection(direction)) {
+            double x = direction[0];
+            double y = direction[1];
+            double z = direction[2];
+            // a plane's normal goes by the inverse transpose of the map: the transpose of back
+            target.setBackFace(back[0] * x + back[4] * y + back[8] * z, back[1] * x + back[5] * y + back[9] * z,
+                    back[2] * x + back[6] * y + back[10] * z);
+        }
         return true;
-    }
-
-    /** Asks the target for the back face across the world's direction carried by the inverse transpose of m. */
-    private void setBackFace(ShadowFrustum target, double[] m) {
-        // (L⁻¹)ᵀ = cof(L) / det(L), the cofactor rows r1 × r2, r2 × r0, r0 × r1 of L's rows r0, r1, r2
-        double c0x = m[5] * m[10] - m[6] * m[9];
-        double c0y = m[6] * m[8] - m[4] * m[10];
-        double c0z = m[4] * m[9] - m[5] * m[8];
-        double c1x = m[9] * m[2] - m[10] * m[1];
-        double c1y = m[10] * m[0] - m[8] * m[2];
-        double c1z = m[8] * m[1] - m[9] * m[0];
-        double c2x = m[1] * m[6] - m[2] * m[5];
-        double c2y = m[2] * m[4] - m[0] * m[6];
-        double c2z = m[0] * m[5] - m[1] * m[4];
-        double sign = Math.signum(m[0] * c0x + m[1] * c0y + m[2] * c0z);
-        double x = direction[0];
-        double y = direction[1];
-        double z = direction[2];
-        target.setBackFace(sign * (c0x * x + c0y * y + c0z * z), sign * (c1x * x + c1y * y + c1z * z),
-                sign * (c2x * x + c2y * y + c2z * z));
     }
 
     /** Writes m times the point (x, y, z) at an array's place. */

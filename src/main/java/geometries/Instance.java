@@ -37,6 +37,8 @@ public final class Instance extends Geometry {
     private final Transform inverse;
     /** The inverse transform's 12 numbers, for the hot path. */
     private final double[] toBody;
+    /** The transform's 12 numbers, for the bundles' gather ({@link #mayMeet}). */
+    private final double[] toWorld;
     /** The body's hierarchy when last asked for, shared with every instance of the body. */
     private BoundingVolumeHierarchy tree;
 
@@ -52,6 +54,7 @@ public final class Instance extends Geometry {
         this.transform = requireNonNull(transform, "instance's transform");
         this.inverse = transform.inverse();
         this.toBody = inverse.toArray();
+        this.toWorld = transform.toArray();
     }
 
     /** {@return the body placed} */
@@ -166,7 +169,7 @@ public final class Instance extends Geometry {
      */
     @Override
     public boolean mayMeet(ShadowFrustum frustum) {
-        return walked().mayMeet(frustum, toBody);
+        return walked().mayMeet(frustum, toBody, toWorld);
     }
 
     /** {@return the body's nearest hit on the ray, carried to the world (the part is not used)} */

@@ -77,7 +77,7 @@ final class BvhFixtures {
         int darkened;
     }
 
-    /** The identity's 12 numbers, for {@link BoundingVolumeHierarchy#mayMeet(ShadowFrustum, double[])}. */
+    /** The identity's 12 numbers, for {@link BoundingVolumeHierarchy#mayMeet(ShadowFrustum, double[], double[])}. */
     private static final double[] IDENTITY_MAP = primitives.Transform.IDENTITY.toArray();
 
     /**
@@ -136,7 +136,7 @@ final class BvhFixtures {
                     + ", a " + a + ", b " + b + ", thickness " + thick + ", gathered " + found + ", " + meeting
                     + " boxes meet)";
             // the walk that stops at the first body, with the pyramid carried onto itself, finds one when the gather does
-            assertEquals(found, bvh.mayMeet(frustum, IDENTITY_MAP), () -> bundleLabel.get() + ": mayMeet disagrees");
+            assertEquals(found, bvh.mayMeet(frustum, IDENTITY_MAP, IDENTITY_MAP), () -> bundleLabel.get() + ": mayMeet disagrees");
             if (!found) {
                 // a body that may meet the frustum (its box and its own test) is in nodes whose boxes meet it: gathered
                 assertEquals(0, meeting, () -> bundleLabel.get() + ": nothing gathered though bodies may meet");

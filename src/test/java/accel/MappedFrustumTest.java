@@ -53,7 +53,8 @@ class MappedFrustumTest {
     /** {@return the frustum of a pyramid carried into a placement's body space, by its inverse} */
     private static ShadowFrustum carried(ShadowFrustum world, Transform placement) {
         ShadowFrustum body = new ShadowFrustum();
-        assertTrue(new MappedFrustum().set(body, world, placement.inverse().toArray()), "the pyramid must carry");
+        assertTrue(new MappedFrustum().set(body, world, placement.inverse().toArray(), placement.toArray()),
+                "the pyramid must carry");
         return body;
     }
 
@@ -94,7 +95,8 @@ class MappedFrustumTest {
         ShadowFrustum flat = new ShadowFrustum();
         assertFalse(flat.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0),
                 "TC12: the apex on the base must be flat");
-        assertFalse(new MappedFrustum().set(new ShadowFrustum(), flat, Transform.IDENTITY.toArray()),
+        double[] identity = Transform.IDENTITY.toArray();
+        assertFalse(new MappedFrustum().set(new ShadowFrustum(), flat, identity, identity),
                 "TC12: a flat pyramid must not be carried");
     }
 
