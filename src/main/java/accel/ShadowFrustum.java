@@ -195,16 +195,20 @@ public final class ShadowFrustum {
      * @return the pyramid's size: its largest coordinate plus the box's three extents
      */
     private double setHull() {
+        // comparisons, not Math.min and Math.max: C2's intrinsics for doubles cost several times more
         double size = 0;
         for (int k = 0; k < 3; ++k) {
-            hull[k] = Double.POSITIVE_INFINITY;
-            hull[3 + k] = Double.NEGATIVE_INFINITY;
-            for (int i = 0; i < 5; ++i) {
-                double x = vertices[3 * i + k];
-                hull[k] = Math.min(hull[k], x);
-                hull[3 + k] = Math.max(hull[3 + k], x);
-                size = Math.max(size, Math.abs(x));
+            double low = vertices[k];
+            double high = low;
+            for (int i = 3 + k; i < 15; i += 3) {
+                double x = vertices[i];
+                low = x < low ? x : low;
+                high = x > high ? x : high;
             }
+            hull[k] = low;
+            hull[3 + k] = high;
+            double reach = high > -low ? high : -low;
+            size = reach > size ? reach : size;
         }
         for (int k = 0; k < 3; ++k)
             size += hull[3 + k] - hull[k];
