@@ -251,8 +251,9 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Whether any ray of a bundle given in another space may meet the bodies: its pyramid is carried
-     * into the bodies' space ({@link MappedFrustum}) and the tree walked with it until a body that may
-     * meet it is found, as a gather finds bodies. An instance answers {@link Geometry#mayMeet} so.
+     * into the bodies' space ({@link MappedFrustum}) and gathered for there, as this tree's own bundles
+     * are; the bundle's packets then take that gather ({@link #packetTransmittances(Query, int, double[],
+     * double[])}). An instance answers {@link Geometry#mayMeet} so.
      *
      * @param frustum the bundle's pyramid, in the space the map comes from (an instance's world)
      * @param toBody  the map into the bodies' space, 12 numbers (see {@link primitives.Transform#toArray})
@@ -260,8 +261,21 @@ public final class BoundingVolumeHierarchy {
      * @return false only when no ray of the bundle can meet any body
      */
     public boolean mayMeet(ShadowFrustum frustum, double[] toBody, double[] toWorld) {
-        Query query = threadQuery();
-        return !query.mapping.set(query.frustum, frustum, toBody, toWorld) || bundleGather.anyMeets(query);
+        return gatherCarried(threadQuery(), frustum, toBody, toWorld);
+    }
+
+    /**
+     * Carries a bundle's pyramid into the bodies' space and gathers for it there, once per pyramid
+     * and map: the packets of the bundle that reach the bodies later take that gather as it is.
+     *
+     * @param query this thread's query on this hierarchy
+     * @return false only when no ray of the bundle can meet any body (true when the pyramid cannot be carried)
+     */
+    private boolean gatherCarried(Query query, ShadowFrustum frustum, double[] toBody, double[] toWorld) {
+        MappedFrustum mapping = query.mapping;
+        if (!mapping.holds(frustum, toBody))
+            query.carriedMeets = !mapping.set(query.frustum, frustum, toBody, toWorld) || bundleGather.gather(query);
+        return query.carriedMeets;
     }
 
     /**
@@ -277,7 +291,65 @@ public final class BoundingVolumeHierarchy {
         Query query = threadQuery();
         RayState mapped = query.ray;
         mapped.setMapped(ray, toBody);
-        return transmittanceWalk.transmittance(query, mapped, ray.ktr > 0 ? ray.minK / ray.ktr : 0);
+        return transmittanceWalk.transmittance(query, mapped, innerLimit(ray));
+    }
+
+    /**
+     * {@link #transmittance(RayState, double[])} for some rays of another hierarchy's packet at once:
+     * the rays of its query's packet listed in its leaf list, all unblocked so far. The bundle's pyramid
+     * is carried into the bodies' space ({@link MappedFrustum}) and gathered there (once: {@link
+     * #mayMeet} did when the other hierarchy gathered the bundle), so the rays are
+     * found open together, blocked together by a closed mesh's core, or traced together as a packet
+     * through this tree ({@link PacketWalk#trace}). An instance answers
+     * {@link geometries.Instance#packetTransmittances} so.
+     *
+     * @param outer  the other hierarchy's scratch space (an instance's world's), its packet and frustum set
+     * @param count  how many rays are listed
+     * @param toBody the map into the bodies' space, 12 numbers (see {@link primitives.Transform#toArray})
+     * @param toWorld its inverse, 12 numbers
+     * @return how many of the listed rays are still unblocked: the list keeps them, in order
+     */
+    public int packetTransmittances(Query outer, int count, double[] toBody, double[] toWorld) {
+        Query query = threadQuery();
+        Packet packet = outer.packet;
+        int[] list = packet.leafRays;
+        boolean meets = gatherCarried(query, outer.frustum, toBody, toWorld);
+        if (!query.mapping.isCarried())
+            return eachAlone(packet, count, toBody);
+        if (!meets)
+            return count;
+        query.clearPacket();
+        for (int k = 0; k < count; ++k) {
+            RayState ray = packet.rays[list[k]];
+            query.packet.add().setMapped(ray, toBody);
+        }
+        for (int k = 0; k < count; ++k)
+            query.packet.rays[k].minK = innerLimit(packet.rays[list[k]]);
+        packetWalk.trace(query);
+        int kept = 0;
+        for (int k = 0; k < count; ++k) {
+            RayState ray = packet.rays[list[k]];
+            if (PacketWalk.through(ray, ray.attenuate(query.packet.rays[k].ktr)))
+                list[kept++] = list[k];
+        }
+        return kept;
+    }
+
+    /** {@link #packetTransmittances(Query, int, double[], double[])} ray by ray, for a pyramid that cannot be carried. */
+    private int eachAlone(Packet packet, int count, double[] toBody) {
+        int[] list = packet.leafRays;
+        int kept = 0;
+        for (int k = 0; k < count; ++k) {
+            RayState ray = packet.rays[list[k]];
+            if (PacketWalk.through(ray, ray.attenuate(transmittance(ray, toBody))))
+                list[kept++] = list[k];
+        }
+        return kept;
+    }
+
+    /** {@return the limit a ray's walk in the bodies' space takes: the ray's own, divided by its transmittance so far} */
+    private static double innerLimit(RayState ray) {
+        return ray.ktr > 0 ? ray.minK / ray.ktr : 0;
     }
 
     /**

@@ -1,6 +1,7 @@
 package accel;
 
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.Triangle;
 import geometries.TriangleMesh;
 import java.util.stream.IntStream;
@@ -47,12 +48,13 @@ final class BundleGather {
         query.blockersTried = false;
         query.blocked = false;
         query.gatheredCount = 0;
+        query.instanceCount = 0;
         query.originCounts[ShadowFrustum.ABOVE] = 0;
         query.originCounts[ShadowFrustum.BELOW] = 0;
         if (nodes.count > 0 && frustum.meetsBox(nodes.bounds, 0))
             gatherTree(query);
-        return found > 0 || query.gatheredCount != 0 || bodies.others.length > 0 || frustum.leftBehindOrigins()
-                || query.blocked;
+        return found > 0 || query.gatheredCount != 0 || query.instanceCount > 0 || bodies.others.length > 0
+                || frustum.leftBehindOrigins() || query.blocked;
     }
 
     /**
@@ -87,6 +89,7 @@ final class BundleGather {
             } else if (!gatherLeaf(query, first, count)) {
                 if (!query.blocked) {
                     query.gatheredCount = -1;
+                    query.instanceCount = 0; // the subtree's walk meets them
                     query.subtree = subtree;
                 }
                 return;
@@ -98,47 +101,9 @@ final class BundleGather {
     }
 
     /**
-     * Whether any body may meet the query's frustum, unlike {@link #gather} stopping at the first one
-     * found: a walk of the nodes whose boxes meet it.
-     *
-     * @param query this thread's scratch space, its frustum set
-     * @return false only when no ray of the bundle can meet any body
-     */
-    boolean anyMeets(Query query) {
-        ShadowFrustum frustum = query.frustum;
-        for (Geometry body : bodies.unbounded)
-            if (body.mayMeet(frustum))
-                return true;
-        if (bodies.others.length > 0)
-            return true;
-        if (nodes.count == 0 || !frustum.meetsBox(nodes.bounds, 0))
-            return false;
-        int[] stack = query.stack;
-        int top = 0;
-        stack[top++] = 0;
-        // every node on the stack meets the frustum; a node's children that do are pushed, left on top
-        while (top > 0) {
-            int node = stack[--top];
-            int first = nodes.links[2 * node];
-            int count = nodes.links[2 * node + 1];
-            if (count >= 0) {
-                for (int b = first; b < first + count; ++b)
-                    if (bodies.meets(frustum, b))
-                        return true;
-                continue;
-            }
-            if (frustum.meetsBox(nodes.bounds, 6 * first + 6))
-                stack[top++] = first + 1;
-            if (frustum.meetsBox(nodes.bounds, 6 * first))
-                stack[top++] = first;
-        }
-        return false;
-    }
-
-    /**
      * Adds a leaf's bodies that may meet the frustum ({@link LeafBodies#meets}), a mesh's triangle
-     * with the numbers of its test; false when there is no room for them, or when the closed meshes,
-     * tried at the first body found, block the bundle.
+     * with the numbers of its test, an instance apart from the others; false when there is no room for
+     * them, or when the closed meshes, tried at the first body found, block the bundle.
      */
     private boolean gatherLeaf(Query query, int first, int count) {
         ShadowFrustum frustum = query.frustum;
@@ -146,6 +111,12 @@ final class BundleGather {
             if (bodies.meets(frustum, b)) {
                 if (!query.blockersTried && blockers.tryOn(query))
                     return false;
+                if (bodies.owner(b) instanceof Instance instance) {
+                    if (query.instanceCount == Query.MAX_GATHERED)
+                        return false;
+                    query.gatheredInstances[query.instanceCount++] = instance;
+                    continue;
+                }
                 int slot = query.gatheredCount;
                 if (slot == Query.MAX_GATHERED)
                     return false;
@@ -204,15 +175,28 @@ final class BundleGather {
 
     /**
      * The transparency along a ray of the bundle from an origin through what the last gather found:
-     * the unbounded bodies, the gathered ones and the intersectables that are not geometries.
+     * the unbounded bodies, the gathered ones, the gathered instances and the intersectables that are
+     * not geometries.
      *
      * @param origin where the ray starts, as the frustum's {@link ShadowFrustum#originOf} tells (0
      *               when no origins are set)
      */
     private double throughBundle(Query query, RayState ray, int origin, double minK) {
-        if (!throughGatheredUnbounded(query, ray, minK) || !throughGathered(query, ray, origin))
+        if (!throughGatheredBodies(query, ray, origin, minK) || !throughGatheredInstances(query, ray))
             return 0;
         return bodies.throughOthers(ray, ray.ktr);
+    }
+
+    /**
+     * Starts the ray's transmittance and attenuates it by the gathered bodies but the instances: the
+     * unbounded ones, then the tree's (those a ray from its origin tests).
+     *
+     * @param origin where the ray starts, as the frustum's {@link ShadowFrustum#originOf} tells (0
+     *               when no origins are set)
+     * @return false when they block the ray; else the ray's ktr holds their transparency
+     */
+    private boolean throughGatheredBodies(Query query, RayState ray, int origin, double minK) {
+        return throughGatheredUnbounded(query, ray, minK) && throughGathered(query, ray, origin);
     }
 
     /**
@@ -224,6 +208,35 @@ final class BundleGather {
         ray.startTransmittance(minK);
         for (int i = 0; i < query.unboundedCount; ++i)
             if (!ray.attenuateBy(query.gatheredUnbounded[i]))
+                return false;
+        return true;
+    }
+
+    /**
+     * Traces a ray of a packet through the bodies the last gather found but its instances, which the
+     * packet takes on together after ({@link PacketWalk}).
+     *
+     * @return true when the ray is still unblocked and has the instances to meet; false when it is
+     *         done, its ktr its answer: blocked (0), or from neither of the frustum's ray origins, and
+     *         so traced alone through the whole hierarchy
+     */
+    boolean throughAllButInstances(Query query, RayState ray) {
+        ShadowFrustum frustum = query.frustum;
+        int origin = frustum.originOf(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz);
+        if (origin == 0 && frustum.hasOrigins()) {
+            ray.ktr = walk.transmittance(query, ray, ray.minK);
+            return false;
+        }
+        if (throughGatheredBodies(query, ray, origin, ray.minK))
+            return true;
+        ray.ktr = 0;
+        return false;
+    }
+
+    /** Attenuates the ray by the gathered instances, each walking its body's tree alone; false when they block it. */
+    private static boolean throughGatheredInstances(Query query, RayState ray) {
+        for (int i = 0; i < query.instanceCount; ++i)
+            if (!ray.attenuateBy(query.gatheredInstances[i]))
                 return false;
         return true;
     }

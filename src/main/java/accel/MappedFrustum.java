@@ -13,6 +13,11 @@ final class MappedFrustum {
     private final double[] apex = new double[3];
     private final double[] base = new double[9];
     private final double[] direction = new double[3];
+    /** The pyramid the last {@link #set} carried, its {@link ShadowFrustum#serial} then, the map, and whether it could. */
+    private ShadowFrustum from;
+    private long fromSerial;
+    private double[] by;
+    private boolean carried;
 
     /**
      * Sets a frustum to a pyramid carried by an affine map.
@@ -25,6 +30,32 @@ final class MappedFrustum {
      *         not be asked
      */
     boolean set(ShadowFrustum target, ShadowFrustum world, double[] m, double[] back) {
+        from = world;
+        fromSerial = world.serial();
+        by = m;
+        carried = carry(target, world, m, back);
+        return carried;
+    }
+
+    /**
+     * Whether the last {@link #set} carried this pyramid, unchanged since, by this map (the same
+     * array): what was found for the carried pyramid then still holds.
+     *
+     * @param world the bundle's pyramid
+     * @param m     the map
+     * @return true when the carried pyramid is the one the last set made
+     */
+    boolean holds(ShadowFrustum world, double[] m) {
+        return world == from && world.serial() == fromSerial && m == by;
+    }
+
+    /** {@return whether the last {@link #set} could carry its pyramid} */
+    boolean isCarried() {
+        return carried;
+    }
+
+    /** {@link #set}'s work; false when the pyramid is not set or the carried one is flat. */
+    private boolean carry(ShadowFrustum target, ShadowFrustum world, double[] m, double[] back) {
         if (!world.isSet())
             return false;
         double[] v = world.vertices();

@@ -1,6 +1,7 @@
 package accel;
 
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.Triangle;
 import geometries.TriangleMesh;
 
@@ -29,6 +30,18 @@ final class PacketWalk {
      * @param minK  below this product a ray's answer is 0
      */
     void transmittances(Query query, double minK) {
+        for (int r = 0; r < query.packet.size; ++r)
+            query.packet.rays[r].minK = minK;
+        trace(query);
+    }
+
+    /**
+     * Traces every ray of the query's packet, each with its own limit: below its {@link RayState#minK}
+     * its answer is 0.
+     *
+     * @param query this thread's scratch space, as the last gather left it, its packet filled
+     */
+    void trace(Query query) {
         RayState[] rays = query.packet.rays;
         int n = query.packet.size;
         if (query.blocked) {
@@ -37,14 +50,17 @@ final class PacketWalk {
             return;
         }
         if (query.gatheredCount >= 0) {
-            for (int r = 0; r < n; ++r)
-                rays[r].ktr = gather.rayTransmittance(query, rays[r], minK);
+            if (query.instanceCount > 0)
+                gatheredWithInstances(query);
+            else
+                for (int r = 0; r < n; ++r)
+                    rays[r].ktr = gather.rayTransmittance(query, rays[r], rays[r].minK);
             return;
         }
         int active = 0;
         for (int r = 0; r < n; ++r) {
             RayState ray = rays[r].invert();
-            if (!BundleGather.throughGatheredUnbounded(query, ray, minK))
+            if (!BundleGather.throughGatheredUnbounded(query, ray, ray.minK))
                 ray.ktr = 0;
             if (ray.ktr > 0)
                 ++active;
@@ -55,6 +71,27 @@ final class PacketWalk {
         for (int r = 0; r < n; ++r)
             if (rays[r].ktr > 0)
                 rays[r].ktr = bodies.throughOthers(rays[r], rays[r].ktr);
+    }
+
+    /**
+     * Traces the packet's rays through the bodies the last gather kept one by one, instances among
+     * them: each ray through the other bodies alone (or through the whole hierarchy, from neither ray
+     * origin), then the rays still unblocked through each instance together
+     * ({@link Instance#packetTransmittances}).
+     */
+    private void gatheredWithInstances(Query query) {
+        Packet packet = query.packet;
+        int[] list = packet.leafRays;
+        int count = 0;
+        for (int r = 0; r < packet.size; ++r)
+            if (gather.throughAllButInstances(query, packet.rays[r]))
+                list[count++] = r;
+        for (int i = 0; i < query.instanceCount && count > 0; ++i)
+            count = query.gatheredInstances[i].packetTransmittances(query, count);
+        for (int k = 0; k < count; ++k) {
+            RayState ray = packet.rays[list[k]];
+            ray.ktr = bodies.throughOthers(ray, ray.ktr);
+        }
     }
 
     /**
@@ -105,7 +142,7 @@ final class PacketWalk {
                     continue;
                 }
             } else {
-                active -= leaf(packet, link, count, raysMeeting(packet, node, first, last));
+                active -= leaf(query, link, count, raysMeeting(packet, node, first, last));
                 if (active == 0)
                     return;
             }
@@ -169,19 +206,23 @@ final class PacketWalk {
     /**
      * Tests a leaf's bodies on the rays listed in {@link Packet#leafRays}, all of which meet its box:
      * body after body, each on the rays not blocked yet, so each ray meets the bodies in their order
-     * and stops at the body that blocks it, as alone. The list keeps the rays still unblocked.
+     * and stops at the body that blocks it, as alone; an instance's body takes them on together, in
+     * its own tree ({@link Instance#packetTransmittances}). The list keeps the rays still unblocked.
      *
      * @param firstBody the leaf's first body
      * @param bodyCount its body count
      * @param count     the list's length
      * @return the number of rays the leaf blocked
      */
-    private int leaf(Packet packet, int firstBody, int bodyCount, int count) {
+    private int leaf(Query query, int firstBody, int bodyCount, int count) {
+        Packet packet = query.packet;
         int left = count;
         for (int b = firstBody; b < firstBody + bodyCount && left > 0; ++b) {
             int part = bodies.bodyPart[b];
             Geometry owner = bodies.owner(b);
-            if (part < 0)
+            if (owner instanceof Instance instance)
+                left = instance.packetTransmittances(query, left);
+            else if (part < 0)
                 left = bodyOnPacket(packet, owner, left);
             else {
                 TriangleMesh mesh = (TriangleMesh) owner;
@@ -236,7 +277,7 @@ final class PacketWalk {
     }
 
     /** Sets a packet's ray's transmittance to 0 once it is blocked; {@return whether it was not} */
-    private static boolean through(RayState ray, boolean through) {
+    static boolean through(RayState ray, boolean through) {
         if (!through)
             ray.ktr = 0;
         return through;

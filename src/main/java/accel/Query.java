@@ -1,6 +1,7 @@
 package accel;
 
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.TriangleMesh;
 
 /**
@@ -26,6 +27,11 @@ public final class Query {
     /** Carries another hierarchy's bundle into this one's space, into {@link #frustum} (an instance's body's). */
     final MappedFrustum mapping = new MappedFrustum();
     /**
+     * Whether any ray of the bundle {@link #mapping} carried last may meet the bodies: false only when
+     * its gather here found it open.
+     */
+    boolean carriedMeets;
+    /**
      * The tree's bodies the gather found, in leaf order; a mesh's triangle is −1 here, its numbers in
      * {@link #gatheredTriangles}.
      */
@@ -34,6 +40,12 @@ public final class Query {
     final double[] gatheredTriangles = new double[GATHERED_TRIANGLE * MAX_GATHERED];
     /** How many bodies the gather found, or −1 when they were too many (a subtree was kept). */
     int gatheredCount;
+    /**
+     * The instances among the bodies the gather found, apart from {@link #gathered}: a ray tests
+     * them after the others, and a packet takes each on together, in the body's own tree.
+     */
+    final Instance[] gatheredInstances = new Instance[MAX_GATHERED];
+    int instanceCount;
     /**
      * When the frustum's ray origins are set: per origin, {@link ShadowFrustum#ABOVE} or
      * {@link ShadowFrustum#BELOW} as its {@link ShadowFrustum#originOf} tells, the places in
@@ -94,6 +106,18 @@ public final class Query {
      */
     public boolean isSubtreeGathered() {
         return gatheredCount < 0;
+    }
+
+    /**
+     * Whether the rays of the last {@link BoundingVolumeHierarchy#gather}'s bundle are best traced
+     * together, by {@link BoundingVolumeHierarchy#packetTransmittances}: a subtree was kept, or an
+     * {@link Instance} was gathered (its body's tree then takes the rays on as a packet, in its own
+     * space).
+     *
+     * @return true when the bundle's rays are best traced as a packet
+     */
+    public boolean isPacketTraced() {
+        return gatheredCount < 0 || instanceCount > 0;
     }
 
     /** Empties the packet of rays {@link BoundingVolumeHierarchy#packetTransmittances} traces. */

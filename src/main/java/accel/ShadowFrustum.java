@@ -73,6 +73,8 @@ public final class ShadowFrustum {
     private double flatness;
     /** Whether the last {@link #set} succeeded: until one does, every box and plane may meet the pyramid. */
     private boolean valid;
+    /** How many times the pyramid was changed ({@link #set}, a back face or ray origins told): see {@link #serial}. */
+    private long serial;
 
     /** Creates the scratch space of a pyramid; {@link #set} places it. */
     public ShadowFrustum() {
@@ -97,6 +99,7 @@ public final class ShadowFrustum {
             throw new IllegalArgumentException("the base of a shadow frustum must have 9 numbers: c, a and b");
         if (!(thickness >= 0))
             throw new IllegalArgumentException("the thickness of a shadow frustum must be 0 or more, got " + thickness);
+        ++serial;
         setVertices(apex, base);
         this.thickness = thickness;
         double size = setHull();
@@ -149,6 +152,7 @@ public final class ShadowFrustum {
      * @param nz the direction, z
      */
     public void setBackFace(double nx, double ny, double nz) {
+        ++serial;
         backX = nx;
         backY = ny;
         backZ = nz;
@@ -307,6 +311,7 @@ public final class ShadowFrustum {
      * @param nz the same for z
      */
     public void setOrigins(double px, double py, double pz, double nx, double ny, double nz) {
+        ++serial;
         originX = px;
         originY = py;
         originZ = pz;
@@ -465,6 +470,11 @@ public final class ShadowFrustum {
     /** {@return whether the last {@link #set} succeeded} */
     boolean isSet() {
         return valid;
+    }
+
+    /** {@return a number that changes whenever the pyramid does: what was found for it holds while it stays} */
+    long serial() {
+        return serial;
     }
 
     /**

@@ -1,6 +1,7 @@
 package geometries;
 
 import accel.BoundingVolumeHierarchy;
+import accel.Query;
 import accel.RayState;
 import accel.ShadowFrustum;
 import java.util.ArrayList;
@@ -161,6 +162,19 @@ public final class Instance extends Geometry {
     @Override
     public double transmittance(RayState ray) {
         return walked().transmittance(ray, toBody);
+    }
+
+    /**
+     * Traces some rays of a packet of shadow rays through the body together, its tree walked in the
+     * body's space (see {@link BoundingVolumeHierarchy#packetTransmittances(Query, int, double[], double[])}):
+     * each listed ray is attenuated as {@link #transmittance} would, and the list keeps those still unblocked.
+     *
+     * @param query the scratch space of the hierarchy the instance lies in, its packet and frustum set
+     * @param count how many rays of its packet are listed
+     * @return how many of them are still unblocked
+     */
+    public int packetTransmittances(Query query, int count) {
+        return walked().packetTransmittances(query, count, toBody, toWorld);
     }
 
     /**

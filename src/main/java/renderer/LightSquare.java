@@ -34,7 +34,7 @@ final class LightSquare {
         BLOCKED,
         /** Each is tested against the few bodies gathered for the bundle. */
         GATHERED,
-        /** The bundle kept a subtree: its rays walk it together, as a packet. */
+        /** The bundle kept a subtree, or an instance: its rays walk it together, as a packet. */
         PACKET,
         /** The bundle's pyramid is flat, or there is no square: each walks the whole hierarchy. */
         WHOLE
@@ -195,7 +195,7 @@ final class LightSquare {
             return Bundle.OPEN;
         if (bvh.blocksBundle(query))
             return Bundle.BLOCKED;
-        return query.isSubtreeGathered() ? Bundle.PACKET : Bundle.GATHERED;
+        return query.isPacketTraced() ? Bundle.PACKET : Bundle.GATHERED;
     }
 
     /**

@@ -283,6 +283,7 @@ class BoundingVolumeHierarchyTest {
         Query query = instanced.newQuery();
         Query copyQuery = inPlace.newQuery();
         int subtrees = 0;
+        int instancePackets = 0;
 
         // ===== Equivalence Partitions Tests =====
         // TC01: 300 bundles from random points toward the light's square over the crowd of instances, 16
@@ -301,6 +302,8 @@ class BoundingVolumeHierarchyTest {
             }
             if (query.isSubtreeGathered())
                 ++subtrees;
+            else if (query.isPacketTraced())
+                ++instancePackets;
             for (int r = 0; r < rays.size(); ++r)
                 assertEquals(transmittance(inPlace, rays.get(r), distances.get(r), MIN_K, copyQuery),
                         TestBundles.gathered(instanced, rays.get(r), distances.get(r), MIN_K, query),
@@ -313,6 +316,8 @@ class BoundingVolumeHierarchyTest {
         // ===== Boundary Values Tests =====
         // TC11: some bundles meet more instances than a gather keeps one by one: their packets walk a subtree
         assertTrue(subtrees > 0, "TC11: no bundle kept a subtree of instances");
+        // TC13: some bundles keep a few instances one by one: their rays are a packet all the same
+        assertTrue(instancePackets > 0, "TC13: no bundle traced its gathered instances as a packet");
         // TC12: a cube turned 45° about z: a thin bundle up through a corner of its box, past the cube,
         // is open; the same bundle up through the cube's middle is not
         TriangleMesh cube = TestMeshes.cube(-0.5, -0.5, -0.5, 1);

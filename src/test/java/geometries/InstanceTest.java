@@ -21,6 +21,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 import accel.BoundingVolumeHierarchy;
+import accel.Query;
 import benchmark.SphereMesh;
 import accel.RayState;
 import accel.ShadowFrustum;
@@ -37,6 +38,7 @@ import renderer.ImageWriter;
 import renderer.Render;
 import renderer.RayTracerBasic;
 import scene.Scene;
+import testutil.TestBundles;
 import testutil.TestInstances;
 import testutil.TestMeshes;
 
@@ -113,6 +115,86 @@ class InstanceTest {
         // TC12: the thin bundle of TC01 ending at z = −2, before the cube: false
         assertFalse(turned.mayMeet(pyramid(new Point3D(0, 0, -5), new Point3D(0, 0, -2), a, b)),
                 "TC12: a bundle that ends before the body must not meet it");
+    }
+
+    /**
+     * Test method for {@link Instance#packetTransmittances(Query, int)}: a packet of shadow rays taken
+     * into the bodies' trees together answers as each ray alone.
+     */
+    @Test
+    void testPacketTransmittances() {
+        TriangleMesh cube = TestMeshes.cube(-0.5, -0.5, -0.5, 1);
+        TriangleMesh glass = (TriangleMesh) TestMeshes.cube(-0.5, -0.5, -0.5, 1)
+                .setMaterial(new Material().setKt(0.5));
+        TriangleMesh ball = SphereMesh.mesh(Point3D.ZERO, 1, 24, 48);
+        Geometries world = new Geometries(new Instance(cube, Transform.rotateZ(45)),
+                new Instance(glass, Transform.translate(new Vector(3, 0, 0))),
+                new Instance(ball, Transform.scale(4).then(Transform.translate(new Vector(-20, 0, 0)))));
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(world);
+        Query query = bvh.newQuery();
+        Point3D apex = new Point3D(1.5, 0, -10);
+        Point3D c = new Point3D(1.5, 0, 10);
+        Vector a = new Vector(3.5, 0, 0);
+        Vector b = new Vector(0, 0.5, 0);
+        // rays from the apex to x = −1.5, 2 and 4.5 on the light cross z = 0 at x = 0, 1.75 and 3
+        List<Ray> rays = List.of(rayTo(apex, -1.5), rayTo(apex, 2), rayTo(apex, 4.5));
+        List<Double> distances = rays.stream().map(ray -> distanceTo(apex, ray)).toList();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a bundle over the turned cube and the glass cube gathers both: its rays are a packet
+        assertTrue(TestBundles.gather(bvh, query, apex, c, a, b), "TC01: the bundle must meet the cubes");
+        assertTrue(query.isPacketTraced(), "TC01: a bundle that gathers instances is traced as a packet");
+        assertFalse(query.isSubtreeGathered(), "TC01: two instances are kept one by one");
+        // TC02: through the turned cube 0, between the cubes 1, through the glass cube its kT 0.5 twice (in and out)
+        TestBundles.fillPacket(query, rays, distances);
+        bvh.packetTransmittances(query, 0);
+        double[] expected = { 0, 1, 0.25 };
+        for (int r = 0; r < rays.size(); ++r)
+            assertEquals(expected[r], query.getTransmittance(r), DELTA, "TC02: wrong transmittance of ray " + r);
+        // TC03: the same as each ray alone, with and without a limit below which a ray counts as blocked
+        TestBundles.assertPacket(bvh, query, bvh, bvh.newQuery(), rays, distances, 0, () -> "TC03");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a limit above the glass cube's 0.25: the ray through it is blocked, 0
+        TestBundles.fillPacket(query, rays, distances);
+        bvh.packetTransmittances(query, 0.3);
+        assertEquals(0, query.getTransmittance(2), DELTA, "TC11: below the limit a ray is blocked");
+        // TC12: a thin bundle up through the middle of the big instanced ball, a closed mesh: every ray
+        // is blocked
+        Point3D under = new Point3D(-20, 0, -10);
+        Point3D over = new Point3D(-20, 0, 10);
+        Vector small = new Vector(0.2, 0, 0);
+        Vector side = new Vector(0, 0.2, 0);
+        assertTrue(TestBundles.gather(bvh, query, under, over, small, side), "TC12: the bundle must meet the ball");
+        List<Ray> up = List.of(new Ray(under, new Vector(0, 0, 1)), new Ray(under, new Vector(0.01, 0.01, 1)));
+        List<Double> upDistances = List.of(20.0, 20.0);
+        TestBundles.fillPacket(query, up, upDistances);
+        bvh.packetTransmittances(query, 0);
+        for (int r = 0; r < up.size(); ++r)
+            assertEquals(0, query.getTransmittance(r), 0, "TC12: a ray through the ball must be blocked");
+        // TC13: the bundle of TC01 leaving a surface across x on both sides (ray origins set): a ray from
+        // p − n, one from p + n and one from p itself (traced alone) each get their answer alone
+        double n = 0.001;
+        ShadowFrustum frustum = query.getFrustum();
+        assertTrue(frustum.set(new double[] { 1.5, 0, -10 }, new double[] { 1.5, 0, 10, 3.5, 0, 0, 0, 0.5, 0 }, n),
+                "TC13: the pyramid must not be flat");
+        frustum.setOrigins(1.5, 0, -10, n, 0, 0);
+        assertTrue(bvh.gather(query), "TC13: the bundle must meet the cubes");
+        assertTrue(query.isPacketTraced(), "TC13: a bundle that gathers instances is traced as a packet");
+        List<Ray> leaving = List.of(rayTo(new Point3D(1.5 - n, 0, -10), -1.5), rayTo(new Point3D(1.5 + n, 0, -10), 4.5),
+                rayTo(apex, 2));
+        List<Double> leavingDistances = leaving.stream().map(ray -> distanceTo(ray.getP0(), ray)).toList();
+        TestBundles.assertPacket(bvh, query, bvh, bvh.newQuery(), leaving, leavingDistances, 0, () -> "TC13");
+    }
+
+    /** {@return the ray from a point to the point (x, 0, 10) of a light} */
+    private static Ray rayTo(Point3D from, double x) {
+        return new Ray(from, new Point3D(x, 0, 10).subtract(from));
+    }
+
+    /** {@return the distance from a point along a ray to the light's plane z = 10} */
+    private static double distanceTo(Point3D from, Ray ray) {
+        return (10 - from.getZ()) / ray.getDir().getZ();
     }
 
     /** Test method for {@link Instance#Instance(Intersectable, Transform)}, {@link Instance#getBody()} and {@link Instance#getTransform()}. */
