@@ -14,7 +14,8 @@ import primitives.Parallel;
  * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part whose core, its
  * inner ball ({@link InnerBall}) or one of its inner boxes ({@link InnerBoxes}), lies across every ray
  * of a bundle blocks the bundle at the gather ({@link CoreCrossing}), and a packet's ray through such
- * a core is blocked before the walk.
+ * a core is blocked before the walk. A part closed by caps over its holes ({@link HoleCaps}) blocks so
+ * only the bundles and rays that meet none of its caps' boxes.
  */
 final class ClosedMeshBlockers {
     /** The most closed meshes whose cores the gather tries: those of the largest cores. */
@@ -137,14 +138,32 @@ final class ClosedMeshBlockers {
             Core core = cores[c];
             if ((candidates & 1 << core.blocker) == 0 || !frustum.meetsBox(core.box, 0))
                 continue;
-            if (core.ball != null ? CoreCrossing.sectionInside(frustum, core.ball)
-                    : CoreCrossing.crossesBox(frustum, core.box, 0)) {
+            if ((core.ball != null ? CoreCrossing.sectionInside(frustum, core.ball)
+                    : CoreCrossing.crossesBox(frustum, core.box, 0)) && !meetsCaps(frustum, core)) {
                 query.blocked = true;
                 return true;
             }
             query.coreList[count++] = c;
         }
         query.coreCount = count;
+        return false;
+    }
+
+    /** {@return whether a bundle's pyramid meets the box of a cap over a hole of the core's part: a ray may leave through it} */
+    private boolean meetsCaps(ShadowFrustum frustum, Core core) {
+        double[] caps = blockers[core.blocker].part.capBoxes();
+        for (int b = 0; b < caps.length; b += 6)
+            if (frustum.meetsBox(caps, b))
+                return true;
+        return false;
+    }
+
+    /** {@return whether a ray meets the box of a cap over a hole of the core's part: it may leave through it} */
+    private boolean meetsCaps(RayState ray, Core core) {
+        double[] caps = blockers[core.blocker].part.capBoxes();
+        for (int b = 0; b < caps.length; b += 6)
+            if (ray.boxEntry(caps, b, ray.maxT) != RayState.MISSED)
+                return true;
         return false;
     }
 
@@ -164,7 +183,7 @@ final class ClosedMeshBlockers {
                 RayState ray = packet.rays[r];
                 if (ray.ktr > 0 && (core.ball != null
                         ? core.ball.crossedBy(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT)
-                        : ray.boxEntry(core.box, 0, ray.maxT) != RayState.MISSED)) {
+                        : ray.boxEntry(core.box, 0, ray.maxT) != RayState.MISSED) && !meetsCaps(ray, core)) {
                     ray.ktr = 0;
                     ++blocked;
                 }

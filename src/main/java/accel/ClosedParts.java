@@ -36,8 +36,11 @@ final class ClosedParts {
      * @param ball       the part's inner ball, or null when none was found
      * @param box        the box around the part's triangles, as {@link TriangleMesh#bounds(double[], int)} writes it
      * @param innerBoxes the part's inner boxes ({@link InnerBoxes}), six numbers each, maybe none
+     * @param capBoxes   the boxes of the caps over the part's holes ({@link HoleCaps}), six numbers
+     *                   each, none for a part closed by itself: a ray that meets none of them and
+     *                   passes through a core crosses the part's triangles
      */
-    record Part(int[] triangles, InnerBall ball, double[] box, double[] innerBoxes) {
+    record Part(int[] triangles, InnerBall ball, double[] box, double[] innerBoxes, double[] capBoxes) {
         /** {@return the size of the part's largest core: its ball's radius, or half the shortest side of its largest box} */
         double coreSize() {
             double size = ball == null ? 0 : ball.radius;
@@ -73,14 +76,20 @@ final class ClosedParts {
         int[] indices = mesh.indices();
         int[] partOf = connectedParts(welded, indices);
         List<Part> parts = new ArrayList<>();
-        for (int[] triangles : closedParts(welded, indices, partOf)) {
-            TriangleMesh part = subMesh(mesh, welded, triangles);
+        for (int[] triangles : partsToClose(welded, partOf)) {
+            HoleCaps caps = null;
+            if (!isClosed(welded, indices, triangles)) {
+                caps = HoleCaps.of(mesh, welded, triangles);
+                if (caps == null)
+                    continue;
+            }
+            TriangleMesh part = subMesh(mesh, welded, triangles, caps);
             InnerBall ball = InnerBall.ofClosed(part);
             double[] innerBoxes = InnerBoxes.of(part);
             if (ball != null || innerBoxes.length > 0) {
                 double[] box = new double[6];
                 part.bounds(box, 0);
-                parts.add(new Part(triangles, ball, box, innerBoxes));
+                parts.add(new Part(triangles, ball, box, innerBoxes, caps == null ? new double[0] : caps.boxes));
             }
         }
         return List.copyOf(parts);
@@ -160,14 +169,13 @@ final class ClosedParts {
     }
 
     /**
-     * The closed parts of a mesh.
+     * The connected parts of a mesh large enough to close a volume.
      *
-     * @param welded  per vertex, its welded vertex
-     * @param indices the triangles' vertex indices
-     * @param partOf  per triangle, its part
-     * @return the triangles of each closed part of {@value #MIN_TRIANGLES} or more, in order
+     * @param welded per vertex, its welded vertex
+     * @param partOf per triangle, its part
+     * @return the triangles of each part of {@value #MIN_TRIANGLES} or more, in order
      */
-    private static List<int[]> closedParts(int[] welded, int[] indices, int[] partOf) {
+    private static List<int[]> partsToClose(int[] welded, int[] partOf) {
         int[] sizes = new int[welded.length];
         for (int part : partOf)
             ++sizes[part];
@@ -180,14 +188,11 @@ final class ClosedParts {
         for (int t = 0; t < partOf.length; ++t)
             if (start[partOf[t] + 1] > start[partOf[t]])
                 grouped[next[partOf[t]]++] = t;
-        List<int[]> closed = new ArrayList<>();
+        List<int[]> parts = new ArrayList<>();
         for (int p = 0; p < welded.length; ++p)
-            if (start[p + 1] > start[p]) {
-                int[] triangles = Arrays.copyOfRange(grouped, start[p], start[p + 1]);
-                if (isClosed(welded, indices, triangles))
-                    closed.add(triangles);
-            }
-        return closed;
+            if (start[p + 1] > start[p])
+                parts.add(Arrays.copyOfRange(grouped, start[p], start[p + 1]));
+        return parts;
     }
 
     /**
@@ -234,18 +239,22 @@ final class ClosedParts {
     }
 
     /**
-     * The mesh of some of a mesh's triangles over its welded vertices, each corner in its order.
+     * The mesh of some of a mesh's triangles over its welded vertices, each corner in its order, and
+     * of the caps over their holes.
      *
      * @param mesh      the mesh
      * @param welded    per vertex, its welded vertex
      * @param triangles the triangles
-     * @return the part's own mesh (its vertices the same doubles)
+     * @param caps      the caps over their holes, or null
+     * @return the part's own mesh (its vertices the same doubles), closed when capped
      */
-    private static TriangleMesh subMesh(TriangleMesh mesh, int[] welded, int[] triangles) {
+    private static TriangleMesh subMesh(TriangleMesh mesh, int[] welded, int[] triangles, HoleCaps caps) {
+        int capCount = caps == null ? 0 : caps.triangles.length / 3;
+        int holes = caps == null ? 0 : caps.centroids.length / 3;
         int[] renumbered = new int[welded.length];
         Arrays.fill(renumbered, -1);
-        double[] vertices = new double[9 * triangles.length];
-        int[] indices = new int[3 * triangles.length];
+        double[] vertices = new double[9 * triangles.length + 3 * holes];
+        int[] indices = new int[3 * (triangles.length + capCount)];
         int count = 0;
         for (int i = 0; i < triangles.length; ++i)
             for (int k = 0; k < 3; ++k) {
@@ -259,6 +268,16 @@ final class ClosedParts {
                 }
                 indices[3 * i + k] = renumbered[v];
             }
+        if (caps != null) {
+            System.arraycopy(caps.centroids, 0, vertices, 3 * count, 3 * holes);
+            for (int c = 0; c < capCount; ++c) {
+                int at = 3 * (triangles.length + c);
+                indices[at] = count + caps.triangles[3 * c];
+                indices[at + 1] = renumbered[caps.triangles[3 * c + 1]];
+                indices[at + 2] = renumbered[caps.triangles[3 * c + 2]];
+            }
+            count += holes;
+        }
         return new TriangleMesh(Arrays.copyOf(vertices, 3 * count), indices);
     }
 }

@@ -11,6 +11,7 @@ import static testutil.TestBundles.gatheredRay;
 import static testutil.TestBundles.pointOnTriangle;
 import static testutil.TestBundles.rayTransmittance;
 import static testutil.TestBundles.shadowRays;
+import static testutil.TestMeshes.bowl;
 import static testutil.TestMeshes.cuboid;
 import static testutil.TestRandom.randomUnit;
 
@@ -99,34 +100,6 @@ class ClosedMeshBlockersTest {
             return new Point3D(16 * rnd.nextDouble() - 8, 16 * rnd.nextDouble() - 8,
                     low + (high - low) * rnd.nextDouble());
         }
-    }
-
-    /**
-     * An open mesh: a sphere's mesh without the triangles of its top cap.
-     *
-     * @param centre   the sphere's centre
-     * @param radius   its radius
-     * @param rings    its bands
-     * @param segments its slices
-     * @return the mesh
-     */
-    private static TriangleMesh bowl(Point3D centre, double radius, int rings, int segments) {
-        TriangleMesh sphere = SphereMesh.mesh(centre, radius, rings, segments);
-        double[] vertices = new double[3 * sphere.getVerticesCount()];
-        for (int v = 0; v < sphere.getVerticesCount(); ++v) {
-            Point3D vertex = sphere.getVertex(v);
-            vertices[3 * v] = vertex.getX();
-            vertices[3 * v + 1] = vertex.getY();
-            vertices[3 * v + 2] = vertex.getZ();
-        }
-        int perSlice = 2 * (rings - 1); // the top's triangle first, then the bands' and the bottom's
-        int[] indices = new int[3 * (sphere.getTrianglesCount() - segments)];
-        int i = 0;
-        for (int t = 0; t < sphere.getTrianglesCount(); ++t)
-            if (t % perSlice != 0)
-                for (int k = 0; k < 3; ++k)
-                    indices[i++] = sphere.getVertexIndex(t, k);
-        return new TriangleMesh(vertices, indices);
     }
 
     /** What the bundles over closed meshes did. */
@@ -321,6 +294,40 @@ class ClosedMeshBlockersTest {
             for (double[] ray : shadowRays(rnd, p, up, c, new Vector(0.5, 0, 0), new Vector(0, 0.5, 0), 10))
                 assertEquals(x < 20 ? 0 : 1, rayTransmittance(barScan, barScanQuery, ray, 0), 0,
                         "TC04: a ray from x = " + x + " by the scan");
+        }
+
+        // TC05: an opaque bowl with a small hole (a sphere's mesh of radius 3 at (0, 0, 5) without the fan
+        // around its +y pole, the hole's radius 0.39), closed by a cap: from its centre, inside its core,
+        // a wide bundle toward +y is not blocked whole, and of its rays the scan's answers, those out
+        // through the hole 1 and the others 0, are the packet's; toward +x every ray is blocked
+        TriangleMesh holed = bowl(new Point3D(0, 0, 5), 3, 24, 48);
+        assertEquals(6, ClosedParts.of(holed).get(0).capBoxes().length, "TC05: the bowl's hole must be capped");
+        Geometries cupScene = new Geometries(new Plane(Point3D.ZERO, FLOOR_NORMAL), holed);
+        BoundingVolumeHierarchy cupTree = BoundingVolumeHierarchy.build(cupScene);
+        BoundingVolumeHierarchy cupScan = BoundingVolumeHierarchy.scan(cupScene);
+        Query cupQuery = cupTree.newQuery();
+        Query cupScanQuery = cupScan.newQuery();
+        Point3D centre = new Point3D(0, 0, 5);
+        Vector[] ways = { new Vector(0, 1, 0), new Vector(1, 0, 0) };
+        for (int w = 0; w < ways.length; ++w) {
+            Vector way = ways[w];
+            Point3D c = centre.add(way.scale(25));
+            Vector a = new Vector(0, 0, 5);
+            Vector b = way.crossProduct(a);
+            gatherLeaving(cupTree, cupQuery, centre, way.scale(Ray.DELTA), c, a, b, false);
+            assertFalse(cupTree.blocksBundle(cupQuery) && w == 0, "TC05: the bundle out through the hole");
+            List<Ray> packet = new ArrayList<>();
+            List<Double> distances = new ArrayList<>();
+            int passed = 0;
+            for (double[] ray : shadowRays(rnd, centre, way.scale(Ray.DELTA), c, a, b, 400)) {
+                passed += (int) rayTransmittance(cupScan, cupScanQuery, ray, 0);
+                packet.add(new Ray(new Point3D(ray[0], ray[1], ray[2]), new Vector(ray[3], ray[4], ray[5])));
+                distances.add(ray[6]);
+            }
+            assertTrue(w == 0 ? passed > 0 && passed < packet.size() : passed == 0,
+                    "TC05: rays out through the hole must pass, the others not: " + passed + " of " + packet.size());
+            int number = w;
+            assertPacket(cupTree, cupQuery, cupScan, cupScanQuery, packet, distances, 0, () -> "TC05: way " + number);
         }
 
         // ===== Boundary Values Tests =====

@@ -110,6 +110,17 @@ class ClosedPartsTest {
         assertNull(InnerBall.of(seams), "TC04: by index the mesh is open");
         assertEquals(1, ClosedParts.of(seams).size(), "TC04: welded, the cube is one closed part");
 
+        // TC05: a bowl (a sphere's mesh of 24 rings without its top fan): one part, closed by a cap over its
+        // hole, the cap's box around the hole at the top, the part's core found
+        TriangleMesh bowl = TestMeshes.bowl(new Point3D(0, 0, 0), 2, 24, 48);
+        List<ClosedParts.Part> capped = ClosedParts.of(bowl);
+        assertEquals(1, capped.size(), "TC05: a bowl with a small hole is one part");
+        double[] cap = capped.get(0).capBoxes();
+        assertEquals(6, cap.length, "TC05: one cap");
+        assertEquals(2 * Math.cos(Math.PI / 24), cap[1], 1e-5, "TC05: the cap lies at the hole's ring");
+        assertTrue(capped.get(0).coreSize() > 1, "TC05: the capped part has a core: " + capped.get(0).coreSize());
+        assertEquals(0, parts.get(0).capBoxes().length, "TC05: a closed part has no cap");
+
         // ===== Boundary Values Tests =====
         // TC11: asked again: the same list, kept
         assertSame(parts, ClosedParts.of(sphere), "TC11: the parts are found once and kept");

@@ -1,9 +1,10 @@
 package testutil;
 
 import geometries.TriangleMesh;
+import benchmark.SphereMesh;
 import primitives.Point3D;
 
-/** Small triangle meshes shared by the tests and the benchmark: a cube, a box, and one mesh of several. */
+/** Small triangle meshes shared by the tests and the benchmark: a cube, a box, one mesh of several, and a bowl. */
 public final class TestMeshes {
     /** Not instantiable. */
     private TestMeshes() {
@@ -78,6 +79,34 @@ public final class TestMeshes {
                 vertices[3 * v + 2] = point.getZ();
             }
         }
+        return new TriangleMesh(vertices, indices);
+    }
+
+    /**
+     * An open mesh: a sphere's mesh without the triangles of its top cap.
+     *
+     * @param centre   the sphere's centre
+     * @param radius   its radius
+     * @param rings    its bands
+     * @param segments its slices
+     * @return the mesh
+     */
+    public static TriangleMesh bowl(Point3D centre, double radius, int rings, int segments) {
+        TriangleMesh sphere = SphereMesh.mesh(centre, radius, rings, segments);
+        double[] vertices = new double[3 * sphere.getVerticesCount()];
+        for (int v = 0; v < sphere.getVerticesCount(); ++v) {
+            Point3D vertex = sphere.getVertex(v);
+            vertices[3 * v] = vertex.getX();
+            vertices[3 * v + 1] = vertex.getY();
+            vertices[3 * v + 2] = vertex.getZ();
+        }
+        int perSlice = 2 * (rings - 1); // the top's triangle first, then the bands' and the bottom's
+        int[] indices = new int[3 * (sphere.getTrianglesCount() - segments)];
+        int i = 0;
+        for (int t = 0; t < sphere.getTrianglesCount(); ++t)
+            if (t % perSlice != 0)
+                for (int k = 0; k < 3; ++k)
+                    indices[i++] = sphere.getVertexIndex(t, k);
         return new TriangleMesh(vertices, indices);
     }
 }
