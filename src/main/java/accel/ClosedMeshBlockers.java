@@ -21,7 +21,7 @@ final class ClosedMeshBlockers {
     /** The most closed meshes whose cores the gather tries: those of the largest cores. */
     static final int MAX_BLOCKERS = 16;
     /** The most cores, of all the blockers together, the gather tries: the largest. */
-    static final int MAX_CORES = 32;
+    static final int MAX_CORES = 64;
     /**
      * The smallest core tried, relative to the tree's largest extent: a smaller one rarely holds a
      * bundle's cross-section or meets a packet's ray, and each costs the gather its tests (on ogre's

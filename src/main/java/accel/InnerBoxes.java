@@ -23,7 +23,7 @@ final class InnerBoxes {
     private static final int MIN_CELLS = 4096;
     private static final int MAX_CELLS = 110_592;
     /** The most boxes kept. */
-    static final int MAX_BOXES = 16;
+    static final int MAX_BOXES = 32;
     /** The fewest cells along each side of a box kept. */
     private static final int MIN_SIDE = 2;
     /** The part of the cell's size a triangle's box is grown by when it marks cells, for rounding. */
