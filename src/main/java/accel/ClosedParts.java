@@ -19,8 +19,9 @@ import primitives.Point3D;
  * as two sharing indices do. The triangles then fall into connected parts (union–find over their
  * welded corners); a part is closed when each of its edges is used by an even number of its
  * triangles, and a segment from inside a closed part to outside it crosses that part's surface,
- * whatever the mesh's other parts do. Each mesh's parts are found once and kept, weakly, for as long
- * as the mesh lives.
+ * whatever the mesh's other parts do. A part with a few small holes is closed by caps over them
+ * ({@link HoleCaps}), which a segment must then miss. Each mesh's parts are found once and kept,
+ * weakly, for as long as the mesh lives.
  */
 final class ClosedParts {
     /** The fewest triangles a closed part has: a tetrahedron's. */
