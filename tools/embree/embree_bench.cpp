@@ -159,6 +159,18 @@ static inline double sphereHit(V3 c, double r, V3 o, V3 d, double tnear, double 
     return -1;
 }
 
+// The distance along lane i of a ray stream to sphere primID of the scene (in the ray's own units,
+// its direction not unit), or < 0 for no hit within [tnear, tfar].
+static double laneSphereHit(const Scene *s, unsigned primID, RTCRayN *ray, unsigned N, unsigned i) {
+    V3 o = {RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i)};
+    V3 d = {RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i)};
+    double dl = len(d);
+    d = d * (1 / dl);
+    double t = sphereHit(s->sphereC[primID], s->sphereR[primID], o, d, RTCRayN_tnear(ray, N, i) * dl,
+                         RTCRayN_tfar(ray, N, i) * dl);
+    return t < 0 ? t : t / dl;
+}
+
 static void sphereIntersect(const RTCIntersectFunctionNArguments *args) {
     const Scene *s = (const Scene *)args->geometryUserPtr;
     for (unsigned i = 0; i < args->N; ++i) {
@@ -166,14 +178,9 @@ static void sphereIntersect(const RTCIntersectFunctionNArguments *args) {
         RTCRayHitN *rh = args->rayhit;
         RTCRayN *ray = RTCRayHitN_RayN(rh, args->N);
         RTCHitN *hit = RTCRayHitN_HitN(rh, args->N);
-        V3 o = {RTCRayN_org_x(ray, args->N, i), RTCRayN_org_y(ray, args->N, i), RTCRayN_org_z(ray, args->N, i)};
-        V3 d = {RTCRayN_dir_x(ray, args->N, i), RTCRayN_dir_y(ray, args->N, i), RTCRayN_dir_z(ray, args->N, i)};
-        double dl = len(d);
-        d = d * (1 / dl);
-        double t = sphereHit(s->sphereC[args->primID], s->sphereR[args->primID], o, d,
-                             RTCRayN_tnear(ray, args->N, i) * dl, RTCRayN_tfar(ray, args->N, i) * dl);
+        double t = laneSphereHit(s, args->primID, ray, args->N, i);
         if (t < 0) continue;
-        RTCRayN_tfar(ray, args->N, i) = (float)(t / dl);
+        RTCRayN_tfar(ray, args->N, i) = (float)t;
         RTCHitN_geomID(hit, args->N, i) = args->geomID;
         RTCHitN_primID(hit, args->N, i) = args->primID;
         RTCHitN_u(hit, args->N, i) = 0; RTCHitN_v(hit, args->N, i) = 0;
@@ -184,17 +191,9 @@ static void sphereIntersect(const RTCIntersectFunctionNArguments *args) {
 
 static void sphereOccluded(const RTCOccludedFunctionNArguments *args) {
     const Scene *s = (const Scene *)args->geometryUserPtr;
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (!args->valid[i]) continue;
-        RTCRayN *ray = args->ray;
-        V3 o = {RTCRayN_org_x(ray, args->N, i), RTCRayN_org_y(ray, args->N, i), RTCRayN_org_z(ray, args->N, i)};
-        V3 d = {RTCRayN_dir_x(ray, args->N, i), RTCRayN_dir_y(ray, args->N, i), RTCRayN_dir_z(ray, args->N, i)};
-        double dl = len(d);
-        d = d * (1 / dl);
-        double t = sphereHit(s->sphereC[args->primID], s->sphereR[args->primID], o, d,
-                             RTCRayN_tnear(ray, args->N, i) * dl, RTCRayN_tfar(ray, args->N, i) * dl);
-        if (t >= 0) RTCRayN_tfar(ray, args->N, i) = -INFINITY;
-    }
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] && laneSphereHit(s, args->primID, args->ray, args->N, i) >= 0)
+            RTCRayN_tfar(args->ray, args->N, i) = -INFINITY;
 }
 
 // ---------------------------------------------------------------- rendering

@@ -321,10 +321,10 @@ public final class BoundingVolumeHierarchy {
         query.clearPacket();
         for (int k = 0; k < count; ++k) {
             RayState ray = packet.rays[list[k]];
-            query.packet.add().setMapped(ray, toBody);
+            RayState mapped = query.packet.add();
+            mapped.setMapped(ray, toBody);
+            mapped.minK = innerLimit(ray);
         }
-        for (int k = 0; k < count; ++k)
-            query.packet.rays[k].minK = innerLimit(packet.rays[list[k]]);
         packetWalk.trace(query);
         int kept = 0;
         for (int k = 0; k < count; ++k) {

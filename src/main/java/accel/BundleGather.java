@@ -160,31 +160,10 @@ final class BundleGather {
     double rayTransmittance(Query query, RayState ray, double minK) {
         if (query.blocked)
             return 0;
-        return query.frustum.hasOrigins() ? fromOrigin(query, ray, minK) : throughBundle(query, ray, 0, minK);
-    }
-
-    /**
-     * {@link #rayTransmittance} when the frustum's ray origins are set: a ray from neither origin is
-     * traced alone through the whole hierarchy, as the gather left out bodies only the rays from the
-     * origins miss.
-     */
-    private double fromOrigin(Query query, RayState ray, double minK) {
-        int origin = query.frustum.originOf(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz);
-        return origin == 0 ? walk.transmittance(query, ray, minK) : throughBundle(query, ray, origin, minK);
-    }
-
-    /**
-     * The transparency along a ray of the bundle from an origin through what the last gather found:
-     * the unbounded bodies, the gathered ones, the gathered instances and the intersectables that are
-     * not geometries.
-     *
-     * @param origin where the ray starts, as the frustum's {@link ShadowFrustum#originOf} tells (0
-     *               when no origins are set)
-     */
-    private double throughBundle(Query query, RayState ray, int origin, double minK) {
-        if (!throughGatheredBodies(query, ray, origin, minK) || !throughGatheredInstances(query, ray))
-            return 0;
-        return bodies.throughOthers(ray, ray.ktr);
+        ray.minK = minK;
+        if (!throughAllButInstances(query, ray))
+            return ray.ktr;
+        return throughGatheredInstances(query, ray) ? bodies.throughOthers(ray, ray.ktr) : 0;
     }
 
     /**

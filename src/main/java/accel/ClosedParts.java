@@ -153,7 +153,8 @@ final class ClosedParts {
         return partOf;
     }
 
-    private static void union(int[] parent, int a, int b) {
+    /** Joins the sets of two vertices (union–find). */
+    static void union(int[] parent, int a, int b) {
         int ra = root(parent, a);
         int rb = root(parent, b);
         if (ra != rb)
@@ -161,7 +162,7 @@ final class ClosedParts {
     }
 
     /** {@return the root of a vertex's set, halving the path on the way} */
-    private static int root(int[] parent, int v) {
+    static int root(int[] parent, int v) {
         while (parent[v] != v) {
             parent[v] = parent[parent[v]];
             v = parent[v];

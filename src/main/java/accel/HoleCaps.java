@@ -62,7 +62,7 @@ final class HoleCaps {
             int b = slots.get((int) edge);
             ++degree[a];
             ++degree[b];
-            parent[root(parent, a)] = root(parent, b);
+            ClosedParts.union(parent, a, b);
         }
         for (int d : degree)
             if (d % 2 != 0)
@@ -71,7 +71,7 @@ final class HoleCaps {
         Arrays.fill(hole, -1);
         int holes = 0;
         for (int s = 0; s < parent.length; ++s) {
-            int r = root(parent, s);
+            int r = ClosedParts.root(parent, s);
             hole[s] = hole[r] >= 0 ? hole[r] : (hole[r] = holes++);
         }
         double[] centroids = new double[3 * holes];
@@ -142,12 +142,6 @@ final class HoleCaps {
     /** {@return the larger welded vertex of the edge from corner k of triangle t to the next corner} */
     private static int high(TriangleMesh mesh, int[] welded, int t, int k) {
         return Math.max(welded[mesh.getVertexIndex(t, k)], welded[mesh.getVertexIndex(t, (k + 1) % 3)]);
-    }
-
-    private static int root(int[] parent, int v) {
-        while (parent[v] != v)
-            v = parent[v] = parent[parent[v]];
-        return v;
     }
 
     private static double[] emptyBoxes(int count) {

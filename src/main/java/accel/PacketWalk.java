@@ -50,11 +50,7 @@ final class PacketWalk {
             return;
         }
         if (query.gatheredCount >= 0) {
-            if (query.instanceCount > 0)
-                gatheredWithInstances(query);
-            else
-                for (int r = 0; r < n; ++r)
-                    rays[r].ktr = gather.rayTransmittance(query, rays[r], rays[r].minK);
+            gathered(query);
             return;
         }
         int active = 0;
@@ -74,12 +70,12 @@ final class PacketWalk {
     }
 
     /**
-     * Traces the packet's rays through the bodies the last gather kept one by one, instances among
-     * them: each ray through the other bodies alone (or through the whole hierarchy, from neither ray
-     * origin), then the rays still unblocked through each instance together
-     * ({@link Instance#packetTransmittances}).
+     * Traces the packet's rays through the bodies the last gather kept one by one: each ray through
+     * those that are not instances alone (or through the whole hierarchy, from neither ray origin),
+     * then the rays still unblocked through each gathered instance together
+     * ({@link Instance#packetTransmittances}), as {@link BundleGather#rayTransmittance} traces a ray.
      */
-    private void gatheredWithInstances(Query query) {
+    private void gathered(Query query) {
         Packet packet = query.packet;
         int[] list = packet.leafRays;
         int count = 0;
