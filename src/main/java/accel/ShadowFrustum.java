@@ -57,18 +57,10 @@ public final class ShadowFrustum {
     private double thickness;
     /** The thickness plus the margin: how far outside a face a box or plane must be. */
     private double margin;
-    /** The margin alone, for rounding: how far behind a ray's origin a triangle must be ({@link #originsBehind}). */
+    /** The margin alone, for rounding: how far behind a ray's origin a triangle must be ({@link RayOrigins#behind}). */
     private double rounding;
-    /** Whether {@link #setOrigins} was called since the last {@link #set}, and the point p and offset n it was given. */
-    private boolean originsSet;
-    /** Whether {@link #behindOrigins} has set a triangle aside since the ray origins were set. */
-    private boolean leftBehindOrigins;
-    private double originX;
-    private double originY;
-    private double originZ;
-    private double offsetX;
-    private double offsetY;
-    private double offsetZ;
+    /** The rays' two origins when they leave a surface on both sides ({@link #setOrigins}). */
+    private final RayOrigins origins = new RayOrigins();
     /** The least distance of an inner point from a face, below which the pyramid counts as flat. */
     private double flatness;
     /** Whether the last {@link #set} succeeded: until one does, every box and plane may meet the pyramid. */
@@ -105,8 +97,7 @@ public final class ShadowFrustum {
         double size = setHull();
         rounding = MARGIN * size;
         margin = rounding + thickness;
-        originsSet = false;
-        leftBehindOrigins = false;
+        origins.clear();
         flatness = FLAT * size;
         valid = false;
         for (int side = 0; side < 4; ++side)
@@ -312,71 +303,22 @@ public final class ShadowFrustum {
      */
     public void setOrigins(double px, double py, double pz, double nx, double ny, double nz) {
         ++serial;
-        originX = px;
-        originY = py;
-        originZ = pz;
-        offsetX = nx;
-        offsetY = ny;
-        offsetZ = nz;
-        originsSet = nx != 0 || ny != 0 || nz != 0;
-        leftBehindOrigins = false;
+        origins.set(px, py, pz, nx, ny, nz);
     }
 
-    /**
-     * Where a ray of the bundle starts, as {@link #setOrigins} tells them apart.
-     *
-     * @return {@link #ABOVE} for a ray from p + n that leaves to n's side, {@link #BELOW} for a ray
-     *         from p − n that leaves to the other side, else 0 (also when no ray origins are set)
-     */
+    /** {@return where a ray of the bundle starts: {@link #ABOVE}, {@link #BELOW} or 0, see {@link RayOrigins#originOf}} */
     int originOf(double ox, double oy, double oz, double dx, double dy, double dz) {
-        if (!originsSet)
-            return 0;
-        double side = dx * offsetX + dy * offsetY + dz * offsetZ;
-        if (side > 0 && ox == originX + offsetX && oy == originY + offsetY && oz == originZ + offsetZ)
-            return ABOVE;
-        if (side < 0 && ox == originX - offsetX && oy == originY - offsetY && oz == originZ - offsetZ)
-            return BELOW;
-        return 0;
+        return origins.originOf(ox, oy, oz, dx, dy, dz);
     }
 
-    /**
-     * The ray origins ({@link #setOrigins}) a triangle lies behind, grown as the renderer's test takes it
-     * (see {@link #meetsTriangle}), by more than a rounding margin: behind the plane through p + n
-     * across n, which a ray from there leaves forward, or behind the one through p − n across −n. A
-     * ray from such an origin cannot meet the triangle.
-     *
-     * @param vertices the coordinates of the vertices, three doubles each
-     * @param p1       where the first vertex's x lies in vertices
-     * @param p2       where the second vertex's x lies
-     * @param p3       where the third vertex's x lies
-     * @return {@link #ABOVE}, {@link #BELOW}, both or 0 (always 0 when no ray origins are set)
-     */
+    /** {@return the ray origins a triangle lies behind, see {@link RayOrigins#behind}} */
     int originsBehind(double[] vertices, int p1, int p2, int p3) {
-        if (!originsSet)
-            return 0;
-        double x = vertices[p1];
-        double y = vertices[p1 + 1];
-        double z = vertices[p1 + 2];
-        return originsBehind(along(x - originX, y - originY, z - originZ),
-                along(vertices[p2] - x, vertices[p2 + 1] - y, vertices[p2 + 2] - z),
-                along(vertices[p3] - x, vertices[p3 + 1] - y, vertices[p3 + 2] - z));
+        return origins.behind(vertices, p1, p2, p3, rounding);
     }
 
-    /**
-     * Whether a triangle lies behind both ray origins ({@link #setOrigins}), as {@link #originsBehind} takes
-     * it: then only a ray that starts at neither (one along the surface) may meet it. The frustum
-     * remembers that it said so ({@link #leftBehindOrigins}).
-     *
-     * @param vertices the coordinates of the vertices, three doubles each
-     * @param p1       where the first vertex's x lies in vertices
-     * @param p2       where the second vertex's x lies
-     * @param p3       where the third vertex's x lies
-     * @return true when it lies behind both (never when no ray origins are set)
-     */
+    /** {@return whether a triangle lies behind both ray origins, see {@link RayOrigins#behindBoth}} */
     boolean behindOrigins(double[] vertices, int p1, int p2, int p3) {
-        boolean behind = originsBehind(vertices, p1, p2, p3) == (ABOVE | BELOW);
-        leftBehindOrigins |= behind;
-        return behind;
+        return origins.behindBoth(vertices, p1, p2, p3, rounding);
     }
 
     /**
@@ -384,31 +326,12 @@ public final class ShadowFrustum {
      * from neither origin may still meet it, so the bundle is not open}
      */
     boolean leftBehindOrigins() {
-        return leftBehindOrigins;
+        return origins.leftBehind();
     }
 
     /** {@return whether ray origins are set ({@link #setOrigins}): a ray from neither then tests every body} */
     boolean hasOrigins() {
-        return originsSet;
-    }
-
-    /** {@return the dot product of a vector with the ray origins' offset n} */
-    private double along(double x, double y, double z) {
-        return x * offsetX + y * offsetY + z * offsetZ;
-    }
-
-    /**
-     * The ray origins a triangle lies behind, from its first vertex's height h above p along n and its
-     * edges' heights f and g (all times |n|), its vertices grown by the barycentric tolerance.
-     */
-    private int originsBehind(double h, double f, double g) {
-        double h1 = grown(h, h + f, h + g);
-        double h2 = grown(h + f, h, h + g);
-        double h3 = grown(h + g, h, h + f);
-        double square = offsetX * offsetX + offsetY * offsetY + offsetZ * offsetZ;
-        double slack = rounding * Math.sqrt(square);
-        int behind = Math.max(h1, Math.max(h2, h3)) < square - slack ? ABOVE : 0;
-        return Math.min(h1, Math.min(h2, h3)) > slack - square ? behind | BELOW : behind;
+        return origins.isSet();
     }
 
     /**
@@ -571,7 +494,7 @@ public final class ShadowFrustum {
      * @param third the distance of the third
      * @return the grown vertex's distance
      */
-    private static double grown(double d, double other, double third) {
+    static double grown(double d, double other, double third) {
         return d + Triangle.BARYCENTRIC_TOLERANCE * ((d - other) + (d - third));
     }
 
