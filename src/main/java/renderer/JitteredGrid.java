@@ -98,6 +98,16 @@ public final class JitteredGrid {
         return sqrtSamples;
     }
 
+    /** {@return the column of a cell, by its visiting number, from 0} */
+    int columnOf(int cell) {
+        return cells[2 * cell];
+    }
+
+    /** {@return the row of a cell, by its visiting number, from 0} */
+    int rowOf(int cell) {
+        return cells[2 * cell + 1];
+    }
+
     /** {@return k², the number of cells and so of sample points} */
     public int getSamplesCount() {
         return sqrtSamples * sqrtSamples;

@@ -25,6 +25,8 @@ final class LightSquare {
      * plane for all its rays to leave the surface on the same side.
      */
     private static final double SIDE_MARGIN = 1e-6;
+    /** The order of no grid, until the first packet. */
+    private static final PacketOrder NO_ORDER = new PacketOrder(new JitteredGrid(1), 0, false);
 
     /** How the rays of a bundle are traced. */
     private enum Bundle {
@@ -74,6 +76,9 @@ final class LightSquare {
     private Bundle bundle = Bundle.WHOLE;
     /** Whether the lit point lies on a triangle (of a mesh, or a {@link Triangle}): see {@link #setOnTriangle}. */
     private boolean onTriangle;
+    /** The packet orders of the last grid: of all the rays, and of those inside the grid's outline. */
+    private PacketOrder allOrder = NO_ORDER;
+    private PacketOrder innerOrder = NO_ORDER;
 
     /**
      * Sets the lit point and the ray from it to the light (to the centre of the light's square),
@@ -260,16 +265,17 @@ final class LightSquare {
     }
 
     /**
-     * The transparency along the ray to the centre of the square plus the summed transparency
-     * of the rays to the first sample points: all traced as one packet when the bundle kept a
-     * subtree, else one by one.
+     * The transparency along the ray to the centre of the square plus the summed transparency of the
+     * rays to the sample points of the grid's outline: all traced as one packet, the centre's first
+     * and the others going round the outline, when the bundle kept a subtree, else one by one.
      *
      * @param distance the distance from the point to the centre of the square
-     * @param samples  sample points in the unit square, as a {@link JitteredGrid} draws them
-     * @param to       one past the last sample point
+     * @param samples  sample points in the unit square, as the grid draws them
+     * @param grid     the light's grid
      * @return the centre's transparency plus the sum of the others'
      */
-    double visibility(double distance, double[] samples, int to) {
+    double outlineVisibility(double distance, double[] samples, JitteredGrid grid) {
+        int to = grid.getOutlineCount();
         if (isResolved())
             return resolved(1 + to);
         if (bundle != Bundle.PACKET)
@@ -277,73 +283,119 @@ final class LightSquare {
         query.clearPacket();
         query.addToPacket(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
         traceSamples(samples, 0, to);
-        double samplesKtr = tracePacket(1);
+        bvh.packetTransmittances(query, RayTracerBasic.MIN_CALC_COLOR_K);
+        double samplesKtr = 0;
+        for (int r = 1; r <= to; ++r)
+            samplesKtr += query.getTransmittance(r);
         return query.getTransmittance(0) + samplesKtr;
     }
 
     /**
-     * The summed transparency of the shadow rays to some of the sample points: traced as one
-     * packet when the bundle kept a subtree, else one by one.
+     * The transparency along the ray to the centre of the square plus the summed transparency of the
+     * rays to every sample point, as {@link #outlineVisibility} plus {@link #innerVisibility} sum
+     * them: traced as one packet, in {@link PacketOrder}, when the
+     * bundle kept a subtree.
      *
-     * @param samples sample points in the unit square, as a {@link JitteredGrid} draws them
-     * @param from    the first sample point
-     * @param to      one past the last sample point
+     * @param distance the distance from the point to the centre of the square
+     * @param samples  sample points in the unit square, as the grid draws them
+     * @param grid     the light's grid
+     * @return the centre's transparency plus the sum of the others'
+     */
+    double visibility(double distance, double[] samples, JitteredGrid grid) {
+        int outline = grid.getOutlineCount();
+        if (bundle != Bundle.PACKET)
+            return outlineVisibility(distance, samples, grid) + innerVisibility(samples, grid);
+        if (!allOrder.isFor(grid))
+            allOrder = new PacketOrder(grid, 0, true);
+        tracePacket(allOrder, distance, samples);
+        return (query.getTransmittance(allOrder.centrePlace()) + sum(allOrder, 0, outline))
+                + sum(allOrder, outline, grid.getSamplesCount());
+    }
+
+    /**
+     * The summed transparency of the shadow rays to the sample points inside the grid's outline:
+     * traced as one packet, in {@link PacketOrder}, when the bundle kept a subtree, else one by one.
+     *
+     * @param samples sample points in the unit square, as the grid draws them
+     * @param grid    the light's grid
      * @return the sum of the rays' transparencies
      */
-    double visibility(double[] samples, int from, int to) {
+    double innerVisibility(double[] samples, JitteredGrid grid) {
+        int from = grid.getOutlineCount();
+        int to = grid.getSamplesCount();
         if (isResolved())
             return resolved(to - from);
         if (bundle != Bundle.PACKET)
             return traceSamples(samples, from, to);
+        if (!innerOrder.isFor(grid))
+            innerOrder = new PacketOrder(grid, from, false);
+        tracePacket(innerOrder, 0, samples);
+        return sum(innerOrder, from, to);
+    }
+
+    /**
+     * Fills the query's packet with the rays in an order, and traces them together, through the
+     * subtree the bundle kept.
+     */
+    private void tracePacket(PacketOrder order, double distance, double[] samples) {
         query.clearPacket();
-        traceSamples(samples, from, to);
-        return tracePacket(0);
+        for (int place = 0; place < order.size(); ++place) {
+            int cell = order.rayAt(place);
+            if (cell == PacketOrder.CENTRE)
+                query.addToPacket(centreOx, centreOy, centreOz, centreDx, centreDy, centreDz, distance);
+            else
+                traceSample(samples, cell);
+        }
+        bvh.packetTransmittances(query, RayTracerBasic.MIN_CALC_COLOR_K);
+    }
+
+    /** {@return the summed answers of the packet's rays through cells [from, to), in visiting order} */
+    private double sum(PacketOrder order, int from, int to) {
+        double ktr = 0;
+        for (int cell = from; cell < to; ++cell)
+            ktr += query.getTransmittance(order.placeOf(cell));
+        return ktr;
     }
 
     /**
      * Traces the shadow rays to some of the sample points one by one, or for a packet, adds them
-     * to the query's packet. Like {@link Ray#Ray(Point3D, Vector, Vector)}, each ray starts DELTA
-     * off the surface on the side it leaves to.
+     * to the query's packet.
      *
      * @return the sum of the rays' transparencies (0 for a packet, not traced yet)
      */
     private double traceSamples(double[] samples, int from, int to) {
         double ktr = 0;
-        for (int s = from; s < to; ++s) {
-            double du = (0.5 - samples[2 * s]) * edges;
-            double dv = (0.5 - samples[2 * s + 1]) * edges;
-            double dx = cx + ux * du + vx * dv - px;
-            double dy = cy + uy * du + vy * dv - py;
-            double dz = cz + uz * du + vz * dv - pz;
-            double distance = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            double inverse = 1 / distance;
-            dx *= inverse;
-            dy *= inverse;
-            dz *= inverse;
-            double side = alignZero(nx * dx + ny * dy + nz * dz);
-            double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
-            double ox = px + offset * nx;
-            double oy = py + offset * ny;
-            double oz = pz + offset * nz;
-            if (bundle == Bundle.PACKET)
-                query.addToPacket(ox, oy, oz, dx, dy, dz, distance);
-            else
-                ktr += transmittance(ox, oy, oz, dx, dy, dz, distance);
-        }
+        for (int s = from; s < to; ++s)
+            ktr += traceSample(samples, s);
         return ktr;
     }
 
     /**
-     * Traces the rays of the query's packet together, through the subtree the bundle kept.
+     * Traces the shadow ray to a sample point alone, or for a packet, adds it to the query's packet.
+     * Like {@link Ray#Ray(Point3D, Vector, Vector)}, the ray starts DELTA off the surface on the side
+     * it leaves to.
      *
-     * @param from the first ray whose answer counts
-     * @return the sum of the answers of the rays from that one on
+     * @return the ray's transparency (0 for a packet, not traced yet)
      */
-    private double tracePacket(int from) {
-        bvh.packetTransmittances(query, RayTracerBasic.MIN_CALC_COLOR_K);
-        double ktr = 0;
-        for (int r = from; r < query.getPacketSize(); ++r)
-            ktr += query.getTransmittance(r);
-        return ktr;
+    private double traceSample(double[] samples, int s) {
+        double du = (0.5 - samples[2 * s]) * edges;
+        double dv = (0.5 - samples[2 * s + 1]) * edges;
+        double dx = cx + ux * du + vx * dv - px;
+        double dy = cy + uy * du + vy * dv - py;
+        double dz = cz + uz * du + vz * dv - pz;
+        double distance = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double inverse = 1 / distance;
+        dx *= inverse;
+        dy *= inverse;
+        dz *= inverse;
+        double side = alignZero(nx * dx + ny * dy + nz * dz);
+        double offset = side > 0 ? 1 : side < 0 ? -1 : 0;
+        double ox = px + offset * nx;
+        double oy = py + offset * ny;
+        double oz = pz + offset * nz;
+        if (bundle != Bundle.PACKET)
+            return transmittance(ox, oy, oz, dx, dy, dz, distance);
+        query.addToPacket(ox, oy, oz, dx, dy, dz, distance);
+        return 0;
     }
 }

@@ -368,4 +368,22 @@ class JitteredGridTest {
         assertThrows(IllegalArgumentException.class, () -> grid.sample(new SplitMix64(33), new double[161]),
                 "TC12: a short array must be rejected");
     }
+
+    /** Tests for {@link JitteredGrid#columnOf} and {@link JitteredGrid#rowOf}: each cell's place, by visiting number. */
+    @Test
+    void testCellOf() {
+        JitteredGrid grid = new JitteredGrid(3);
+        // ===== Equivalence Partitions Tests =====
+        // TC01: the outline goes round from the top left corner: (0,0) (1,0) (2,0) (2,1) (2,2) (1,2) (0,2) (0,1)
+        int[][] outline = { { 0, 0 }, { 1, 0 }, { 2, 0 }, { 2, 1 }, { 2, 2 }, { 1, 2 }, { 0, 2 }, { 0, 1 } };
+        for (int c = 0; c < outline.length; ++c)
+            assertArrayEquals(outline[c], new int[] { grid.columnOf(c), grid.rowOf(c) }, "TC01: cell " + c);
+        // TC02: the inner cell comes after the outline
+        assertArrayEquals(new int[] { 1, 1 }, new int[] { grid.columnOf(8), grid.rowOf(8) }, "TC02: cell 8 is (1, 1)");
+
+        // ===== Boundary Values Tests =====
+        // TC11: k = 1: the single cell is (0, 0)
+        JitteredGrid single = new JitteredGrid(1);
+        assertArrayEquals(new int[] { 0, 0 }, new int[] { single.columnOf(0), single.rowOf(0) }, "TC11: (0, 0)");
+    }
 }
