@@ -265,6 +265,20 @@ public final class BoundingVolumeHierarchy {
     }
 
     /**
+     * Whether the last {@link #mayMeet} of a bundle, its pyramid carried into the bodies' space, found
+     * a closed opaque mesh across every ray ({@link #blocksBundle}): then every ray of the bundle is
+     * blocked by the bodies.
+     *
+     * @param frustum the bundle's pyramid, as {@link #mayMeet} was given it
+     * @param toBody  the map into the bodies' space, as {@link #mayMeet} was given it
+     * @return false when it did not, or when {@link #mayMeet} was not asked for that pyramid and map last
+     */
+    public boolean blocksCarried(ShadowFrustum frustum, double[] toBody) {
+        Query query = threadQuery();
+        return query.mapping.holds(frustum, toBody) && query.mapping.isCarried() && query.blocked;
+    }
+
+    /**
      * Carries a bundle's pyramid into the bodies' space and gathers for it there, once per pyramid
      * and map: the packets of the bundle that reach the bodies later take that gather as it is.
      *

@@ -103,7 +103,8 @@ final class BundleGather {
     /**
      * Adds a leaf's bodies that may meet the frustum ({@link LeafBodies#meets}), a mesh's triangle
      * with the numbers of its test, an instance apart from the others; false when there is no room for
-     * them, or when the closed meshes, tried at the first body found, block the bundle.
+     * them, or when the bundle is blocked: by the closed meshes, tried at the first body found, or by
+     * an instance whose body's gather found one of its own closed meshes across every ray.
      */
     private boolean gatherLeaf(Query query, int first, int count) {
         ShadowFrustum frustum = query.frustum;
@@ -112,6 +113,10 @@ final class BundleGather {
                 if (!query.blockersTried && blockers.tryOn(query))
                     return false;
                 if (bodies.owner(b) instanceof Instance instance) {
+                    if (instance.blocksBundle(frustum)) {
+                        query.blocked = true;
+                        return false;
+                    }
                     if (query.instanceCount == Query.MAX_GATHERED)
                         return false;
                     query.gatheredInstances[query.instanceCount++] = instance;

@@ -186,6 +186,17 @@ public final class Instance extends Geometry {
         return walked().mayMeet(frustum, toBody, toWorld);
     }
 
+    /**
+     * Whether the body blocks every ray of a bundle: its last {@link #mayMeet} of the bundle found a
+     * closed opaque mesh of the body across every ray ({@link BoundingVolumeHierarchy#blocksCarried}).
+     *
+     * @param frustum the bundle's pyramid, as {@link #mayMeet} was last given it
+     * @return true when every ray of the bundle is blocked
+     */
+    public boolean blocksBundle(ShadowFrustum frustum) {
+        return walked().blocksCarried(frustum, toBody);
+    }
+
     /** {@return the body's nearest hit on the ray, carried to the world (the part is not used)} */
     @Override
     public GeoPoint hitPoint(Ray ray, double t, int part) {

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.BruteForce.MIN_K;
 import static testutil.TestBundles.assertPacket;
+import static testutil.TestBundles.gather;
 import static testutil.TestBundles.gatherLeaving;
 import static testutil.TestBundles.gatheredRay;
 import static testutil.TestBundles.pointOnTriangle;
@@ -25,11 +26,13 @@ import org.junit.jupiter.api.Test;
 
 import benchmark.SphereMesh;
 import geometries.Geometries;
+import geometries.Instance;
 import geometries.Plane;
 import geometries.Sphere;
 import geometries.TriangleMesh;
 import primitives.Material;
 import primitives.Point3D;
+import primitives.Transform;
 import primitives.Ray;
 import primitives.Vector;
 
@@ -358,5 +361,41 @@ class ClosedMeshBlockersTest {
                 assertEquals(0, rayTransmittance(scan, scanQuery, ray, 0), 0, "TC11: a ray under mesh " + m
                         + " must be blocked");
         }
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#blocksBundle} through an {@link Instance}: an
+     * instanced closed opaque mesh blocks a bundle whole, as the mesh built in place does.
+     */
+    @Test
+    void testInstanceBlocks() {
+        // a ball mesh of radius 1 at the origin, placed by an instance at (0, 0, 10) twice its size
+        TriangleMesh ball = SphereMesh.mesh(Point3D.ZERO, 1, 16, 32);
+        Instance placed = new Instance(ball, Transform.scale(2).then(Transform.translate(new Vector(0, 0, 10))));
+        TriangleMesh inPlace = SphereMesh.mesh(new Point3D(0, 0, 10), 2, 16, 32);
+        Vector a = new Vector(0.5, 0, 0);
+        Vector b = new Vector(0, 0.5, 0);
+        Point3D light = new Point3D(0, 0, 20);
+        Point3D beside = new Point3D(12, 0, 20);
+        // ===== Equivalence Partitions Tests =====
+        for (Geometries scene : List.of(new Geometries(placed, new Plane(Point3D.ZERO, new Vector(0, 0, 1))),
+                new Geometries(inPlace, new Plane(Point3D.ZERO, new Vector(0, 0, 1))))) {
+            BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene);
+            Query query = bvh.newQuery();
+            String what = scene.getGeometries().get(0) instanceof Instance ? "instanced" : "in place";
+            // TC01: a small light right over the ball, seen from under it: every ray crosses the ball
+            assertTrue(gather(bvh, query, new Point3D(0, 0, 1), light, a, b), "TC01: " + what + " gathers");
+            assertTrue(bvh.blocksBundle(query), "TC01: the " + what + " ball must block the bundle");
+            // TC02: a light beside the ball: no ray meets it, nothing blocks the bundle
+            assertFalse(gather(bvh, query, new Point3D(12, 0, 1), beside, a, b) && bvh.blocksBundle(query),
+                    "TC02: the " + what + " ball must not block a bundle beside it");
+        }
+        // TC03: the instanced ball of kT 0.5 lets light through: no bundle blocked
+        ball.setMaterial(new Material().setKt(0.5));
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(new Geometries(placed));
+        bvh.readMaterials();
+        Query query = bvh.newQuery();
+        gather(bvh, query, new Point3D(0, 0, 1), light, a, b);
+        assertFalse(bvh.blocksBundle(query), "TC03: a transparent instanced ball must not block the bundle");
     }
 }
