@@ -293,8 +293,7 @@ final class LightSquare {
     /**
      * The transparency along the ray to the centre of the square plus the summed transparency of the
      * rays to every sample point, as {@link #outlineVisibility} plus {@link #innerVisibility} sum
-     * them: traced as one packet, in {@link PacketOrder}, when the
-     * bundle kept a subtree.
+     * them: traced as one packet, in {@link PacketOrder}, when the bundle kept a subtree.
      *
      * @param distance the distance from the point to the centre of the square
      * @param samples  sample points in the unit square, as the grid draws them

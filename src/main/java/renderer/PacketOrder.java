@@ -36,8 +36,8 @@ final class PacketOrder {
         this.grid = grid;
         this.first = first;
         int k = grid.getSqrtSamples();
-        int[] visits = new int[k * k];
-        Arrays.fill(visits, CENTRE);
+        int[] visits = new int[k * k]; // per cell, row by row: its visiting number, −1 when left out
+        Arrays.fill(visits, -1);
         for (int c = first; c < grid.getSamplesCount(); ++c)
             visits[grid.rowOf(c) * k + grid.columnOf(c)] = c;
         int count = grid.getSamplesCount() - first;
@@ -49,7 +49,7 @@ final class PacketOrder {
         for (int row = 0; row < k; ++row)
             for (int i = 0; i < k; ++i) {
                 int cell = visits[row * k + (row % 2 == 0 ? i : k - 1 - i)];
-                if (cell == CENTRE)
+                if (cell < 0)
                     continue;
                 if (withCentre && place == half) {
                     centrePlace = place;
