@@ -518,6 +518,11 @@ public final class TriangleMesh extends Geometry {
         target[offset + 9] = parallelLimits[t];
     }
 
+    /** {@return the vertices' coordinates, x, y and z of each vertex in turn: a copy, so the mesh cannot change under its user} */
+    public double[] coordinates() {
+        return vertices.clone();
+    }
+
     /** {@return the triangles' vertex indices, three per triangle: a copy, so the mesh cannot change under its user} */
     public int[] indices() {
         return indices.clone();

@@ -222,14 +222,7 @@ public final class SceneWriter {
                 geometries(xml, mesh.getTriangles());
                 return;
             }
-            double[] vertices = new double[3 * mesh.getVerticesCount()];
-            for (int v = 0; v < mesh.getVerticesCount(); ++v) {
-                Point3D vertex = mesh.getVertex(v);
-                vertices[3 * v] = vertex.getX();
-                vertices[3 * v + 1] = vertex.getY();
-                vertices[3 * v + 2] = vertex.getZ();
-            }
-            xml.start("triangle-mesh").attribute("vertices", numbers(vertices))
+            xml.start("triangle-mesh").attribute("vertices", numbers(mesh.coordinates()))
                     .attribute("triangles", Arrays.stream(mesh.indices()).mapToObj(Integer::toString)
                             .collect(Collectors.joining(" ")));
             if (mesh.isSmooth())

@@ -71,11 +71,7 @@ class InnerBallTest {
             Vector out = sphere.getVertex(v).subtract(centre);
             setVertex(vertices, v, centre.add(out.scale(low + (1 - low) * rnd.nextDouble())));
         }
-        int[] indices = new int[3 * sphere.getTrianglesCount()];
-        for (int t = 0; t < sphere.getTrianglesCount(); ++t)
-            for (int k = 0; k < 3; ++k)
-                indices[3 * t + k] = sphere.getVertexIndex(t, k);
-        return new TriangleMesh(vertices, indices);
+        return new TriangleMesh(vertices, sphere.indices());
     }
 
     /** Puts a point's coordinates at vertex v of an array. */

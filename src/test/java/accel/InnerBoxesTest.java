@@ -89,13 +89,7 @@ class InnerBoxesTest {
         // TC04: a cube without its top (an open mesh): the inside reaches the outside: no box
         TriangleMesh cubeMesh = cube(0, 0, 0, 10);
         int[] indices = cubeMesh.indices();
-        double[] vertices = new double[3 * cubeMesh.getVerticesCount()];
-        for (int v = 0; v < cubeMesh.getVerticesCount(); ++v) {
-            Point3D p = cubeMesh.getVertex(v);
-            vertices[3 * v] = p.getX();
-            vertices[3 * v + 1] = p.getY();
-            vertices[3 * v + 2] = p.getZ();
-        }
+        double[] vertices = cubeMesh.coordinates();
         int[] open = openTop(vertices, indices);
         assertEquals(0, InnerBoxes.of(new TriangleMesh(vertices, open)).length, "TC04: an open box has no inner box");
 

@@ -3,6 +3,7 @@ package geometries;
 import testutil.TestMeshes;
 import accel.ShadowFrustum;
 import accel.BoundingVolumeHierarchy;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -553,6 +554,22 @@ class TriangleMeshTest {
         render.renderImage();
         render.writeToImage();
         return image;
+    }
+
+    /** Test method for {@link TriangleMesh#coordinates()}: the vertices' coordinates, as a copy. */
+    @Test
+    void testCoordinates() {
+        TriangleMesh mesh = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 2 },
+                new int[] { 0, 1, 2, 0, 2, 3 });
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a quad of two triangles: x, y, z of each of its four vertices in turn
+        assertArrayEquals(new double[] { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 2 }, mesh.coordinates(), 0,
+                "TC01: the vertices' coordinates");
+
+        // ===== Boundary Values Tests =====
+        // TC11: the returned array changed: the mesh keeps its vertices (vertex 3 still at z = 2)
+        mesh.coordinates()[11] = 5;
+        assertEquals(2, mesh.getVertex(3).getZ(), 0, "TC11: the mesh must not change with the copy");
     }
 
     /** Test method for {@link TriangleMesh#indices()}: the triangles' vertex indices, as a copy. */

@@ -68,11 +68,7 @@ public final class TestInstances {
             vertices[3 * v + 1] = p.getY();
             vertices[3 * v + 2] = p.getZ();
         }
-        int[] indices = new int[3 * mesh.getTrianglesCount()];
-        for (int t = 0; t < mesh.getTrianglesCount(); ++t)
-            for (int k = 0; k < 3; ++k)
-                indices[3 * t + k] = mesh.getVertexIndex(t, k);
-        TriangleMesh copy = (TriangleMesh) new TriangleMesh(vertices, indices).setMaterial(mesh.getMaterial())
+        TriangleMesh copy = (TriangleMesh) new TriangleMesh(vertices, mesh.indices()).setMaterial(mesh.getMaterial())
                 .setEmission(mesh.getEmission());
         double[] normals = mesh.getNormals();
         if (normals != null) {

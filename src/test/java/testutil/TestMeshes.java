@@ -93,13 +93,6 @@ public final class TestMeshes {
      */
     public static TriangleMesh bowl(Point3D centre, double radius, int rings, int segments) {
         TriangleMesh sphere = SphereMesh.mesh(centre, radius, rings, segments);
-        double[] vertices = new double[3 * sphere.getVerticesCount()];
-        for (int v = 0; v < sphere.getVerticesCount(); ++v) {
-            Point3D vertex = sphere.getVertex(v);
-            vertices[3 * v] = vertex.getX();
-            vertices[3 * v + 1] = vertex.getY();
-            vertices[3 * v + 2] = vertex.getZ();
-        }
         int perSlice = 2 * (rings - 1); // the top's triangle first, then the bands' and the bottom's
         int[] indices = new int[3 * (sphere.getTrianglesCount() - segments)];
         int i = 0;
@@ -107,6 +100,6 @@ public final class TestMeshes {
             if (t % perSlice != 0)
                 for (int k = 0; k < 3; ++k)
                     indices[i++] = sphere.getVertexIndex(t, k);
-        return new TriangleMesh(vertices, indices);
+        return new TriangleMesh(sphere.coordinates(), indices);
     }
 }
