@@ -136,15 +136,36 @@ public final class RayState {
      * Where the ray enters a box [x0, x1] × [y0, y1] × [z0, z1] between its origin and maxT (the slab
      * test), or {@link #MISSED} when it does not meet the box there. Each slab is entered at its near
      * face (the low one for a positive direction component, so for +0.0, and the high one for a
-     * negative component, so for −0.0) and left at the far one. A direction component of ±0 makes the
-     * inverse ±∞: a ray outside the slab then gets an empty interval, one inside it (−∞, +∞), and one
-     * lying exactly in a face's plane gets 0·∞ = NaN there, which the comparisons below skip, so the
-     * slab (closed) does not restrict the interval. Small enough for the JIT to inline into every walk.
+     * negative component, so for −0.0) and left at the far one. The slabs' intervals are intersected
+     * with {@link Math#max} and {@link Math#min}, which the JIT compiles without branches (a ray's
+     * box tests are hard to predict). A direction component of ±0 makes the inverse ±∞: a ray outside
+     * the slab then gets an empty interval, one inside it (−∞, +∞), and one lying exactly in a face's
+     * plane gets 0·∞ = NaN there, which the min and max carry to the answer; only then is the test
+     * made again by {@link #slabEntrySkippingNaN}. Small enough for the JIT to inline into every walk.
      */
     private double slabEntry(double x0, double y0, double z0, double x1, double y1, double z1, double maxT) {
         double ix = this.ix;
         double iy = this.iy;
         double iz = this.iz;
+        double nearX = ((ix < 0 ? x1 : x0) - ox) * ix;
+        double farX = ((ix < 0 ? x0 : x1) - ox) * ix;
+        double nearY = ((iy < 0 ? y1 : y0) - oy) * iy;
+        double farY = ((iy < 0 ? y0 : y1) - oy) * iy;
+        double nearZ = ((iz < 0 ? z1 : z0) - oz) * iz;
+        double farZ = ((iz < 0 ? z0 : z1) - oz) * iz;
+        double near = Math.max(Math.max(nearX, nearY), Math.max(nearZ, 0));
+        double far = Math.min(Math.min(farX, farY), Math.min(farZ, maxT));
+        if (near <= far)
+            return near;
+        return near == near && far == far ? MISSED : slabEntrySkippingNaN(x0, y0, z0, x1, y1, z1, maxT);
+    }
+
+    /**
+     * {@link #slabEntry} for a ray lying exactly in a face's plane: the comparisons below skip a slab's
+     * NaN, so the slab (closed) does not restrict the interval.
+     */
+    private double slabEntrySkippingNaN(double x0, double y0, double z0, double x1, double y1, double z1,
+                                        double maxT) {
         double near = ((ix < 0 ? x1 : x0) - ox) * ix;
         double far = ((ix < 0 ? x0 : x1) - ox) * ix;
         near = near > 0 ? near : 0;

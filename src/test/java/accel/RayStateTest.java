@@ -25,9 +25,9 @@ import primitives.Ray;
 import primitives.Vector;
 
 /**
- * Unit tests for {@link RayState}'s slab test ({@link RayState#boxEntry(double[], int, double)}), through
- * the hierarchy's closest hits: rays along the axes (zero direction components), rays starting on box
- * faces and rays starting inside a body's box.
+ * Unit tests for {@link RayState}'s slab test ({@link RayState#boxEntry(double[], int, double)}): its
+ * distances, and through the hierarchy's closest hits, rays along the axes (zero direction
+ * components), rays starting on box faces and rays starting inside a body's box.
  */
 class RayStateTest {
     /**
@@ -184,5 +184,46 @@ class RayStateTest {
         Ray fromCentre = new Ray(Point3D.ZERO, new Vector(0, 1, 0));
         assertEquals(1, transmittance(bvh, fromCentre, 1.9, MIN_K, bvh.newQuery()), 0, "TC13: not yet at the sphere");
         assertEquals(0, transmittance(bvh, fromCentre, 2.1, MIN_K, bvh.newQuery()), 0, "TC13: past the sphere");
+    }
+    /**
+     * Test method for {@link RayState#boxEntry(double[], int, double)} itself, on the unit cube: the
+     * intervals intersected by min and max, and the rays lying in a face's plane (0·∞ = NaN), tested
+     * again with the NaN skipped.
+     */
+    @Test
+    void testBoxEntryDistances() {
+        double[] box = { 0, 0, 0, 1, 1, 1 };
+        // ===== Equivalence Partitions Tests =====
+        // TC01: from (−1, 0.5, 0.5) along x: enters at 1
+        assertEquals(1, entry(box, new Point3D(-1, 0.5, 0.5), new Vector(1, 0, 0), 10), 1e-12, "TC01");
+        // TC02: from inside: enters at 0
+        assertEquals(0, entry(box, new Point3D(0.5, 0.5, 0.5), new Vector(0.6, 0.8, 0), 10), 1e-12, "TC02");
+        // TC03: beside the box: misses
+        assertEquals(RayState.MISSED, entry(box, new Point3D(-1, 2, 0.5), new Vector(1, 0, 0), 10), 0, "TC03");
+        // TC04: towards it, but maxT ends before it: misses
+        assertEquals(RayState.MISSED, entry(box, new Point3D(-1, 0.5, 0.5), new Vector(1, 0, 0), 0.5), 0, "TC04");
+        // TC05: diagonally from (2, 2, 2) backwards along every axis: enters at the corner (1, 1, 1)
+        double s = Math.sqrt(3);
+        assertEquals(s, entry(box, new Point3D(2, 2, 2), new Vector(-1 / s, -1 / s, -1 / s), 10), 1e-12, "TC05");
+        // ===== Boundary Values Tests =====
+        // TC11: in the plane of the high face x = 1 (x component +0): along the face, enters at 1
+        assertEquals(1, entry(box, new Point3D(1, -1, 0.5), new Vector(0, 1, 0), 10), 1e-12, "TC11");
+        // TC12: in the plane of the low face x = 0 (x component −0.0): enters at 1
+        assertEquals(1, entry(box, new Point3D(0, -1, 0.5), new Vector(-0.0, 1, 0), 10), 1e-12, "TC12");
+        // TC13: in the plane of face x = 0, going away from the box: misses
+        assertEquals(RayState.MISSED, entry(box, new Point3D(0, -1, 0.5), new Vector(0, -1, 0), 10), 0, "TC13");
+        // TC14: along the edge x = 0, z = 1 (two components 0): enters at 1
+        assertEquals(1, entry(box, new Point3D(0, -1, 1), new Vector(0, 1, 0), 10), 1e-12, "TC14");
+        // TC15: in the plane x = 1 of a box turned inside out (x0 > x1): misses
+        double[] insideOut = { 1, 0, 0, 0, 1, 1 };
+        assertEquals(RayState.MISSED, entry(insideOut, new Point3D(1, -1, 0.5), new Vector(0, 1, 0), 10), 0, "TC15");
+        // TC16: touching the box at its corner only, at maxT: enters at 1
+        assertEquals(1, entry(box, new Point3D(-1, 0, 0), new Vector(1, 0, 0), 1), 1e-12, "TC16");
+    }
+
+    /** {@return where a ray enters a box, by {@link RayState#boxEntry(double[], int, double)}} */
+    private static double entry(double[] box, Point3D p0, Vector direction, double maxT) {
+        return new RayState().set(p0.getX(), p0.getY(), p0.getZ(), direction.getX(), direction.getY(), direction.getZ(),
+                maxT).invert().boxEntry(box, 0, maxT);
     }
 }
