@@ -131,20 +131,18 @@ public class Triangle extends Polygon {
         double py = dz * e2x - dx * e2z;
         double pz = dx * e2y - dy * e2x;
         double det = e1x * px + e1y * py + e1z * pz;
-        if (Math.abs(det) < parallelLimit)
-            return NO_HIT;
         double inv = 1.0 / det;
         double tx = ray.ox() - p1x;
         double ty = ray.oy() - p1y;
         double tz = ray.oz() - p1z;
         double u = (tx * px + ty * py + tz * pz) * inv;
-        if (u < -BARYCENTRIC_TOLERANCE || u > 1 + BARYCENTRIC_TOLERANCE)
-            return NO_HIT;
         double qx = ty * e1z - tz * e1y;
         double qy = tz * e1x - tx * e1z;
         double qz = tx * e1y - ty * e1x;
         double v = (dx * qx + dy * qy + dz * qz) * inv;
-        if (v < -BARYCENTRIC_TOLERANCE || u + v > 1 + BARYCENTRIC_TOLERANCE)
+        // one branch for the four tests (| evaluates them all): their outcomes are hard to predict
+        if (Math.abs(det) < parallelLimit | u < -BARYCENTRIC_TOLERANCE | u > 1 + BARYCENTRIC_TOLERANCE
+                | v < -BARYCENTRIC_TOLERANCE | u + v > 1 + BARYCENTRIC_TOLERANCE)
             return NO_HIT;
         return hitWithin(alignZero((e2x * qx + e2y * qy + e2z * qz) * inv), ray.maxT());
     }
