@@ -422,7 +422,7 @@ public final class ShadowFrustum {
             return true;
         double m = margin;
         double[] h = hull;
-        if (x0 > h[3] + m || y0 > h[4] + m || z0 > h[5] + m || x1 < h[0] - m || y1 < h[1] - m || z1 < h[2] - m)
+        if (x0 > h[3] + m | y0 > h[4] + m | z0 > h[5] + m | x1 < h[0] - m | y1 < h[1] - m | z1 < h[2] - m)
             return false;
         double[] pl = planes;
         for (int p = 0; p < 4 * PLANES; p += 4) {
