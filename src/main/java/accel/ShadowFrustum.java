@@ -422,6 +422,7 @@ public final class ShadowFrustum {
             return true;
         double m = margin;
         double[] h = hull;
+        // one branch for the six tests (| evaluates them all): their outcomes are hard to predict
         if (x0 > h[3] + m | y0 > h[4] + m | z0 > h[5] + m | x1 < h[0] - m | y1 < h[1] - m | z1 < h[2] - m)
             return false;
         double[] pl = planes;
