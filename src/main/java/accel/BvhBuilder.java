@@ -27,9 +27,6 @@ final class BvhBuilder {
     private static final double TRAVERSAL_COST = 1.0;
     /** Boxes grow by this fraction of their size (plus an absolute bit) so flat bodies are hit. */
     private static final double PADDING = 1e-9;
-    /** The box around nothing, which any box grows: copied, never changed. */
-    private static final double[] EMPTY_BOX = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-            Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
     /** The name of the threads that share the build's work. */
     static final String BUILD_THREADS = "hierarchy-build";
     /** The bodies of one chunk of the work shared out among threads during the build. */
@@ -275,27 +272,24 @@ final class BvhBuilder {
         /** Sets a node's box around bodies [start, end) and the box at c around their centroids. */
         private void enclose(int node, int start, int end, int c) {
             int b = 6 * node;
-            System.arraycopy(EMPTY_BOX, 0, bounds, b, 6);
-            System.arraycopy(EMPTY_BOX, 0, centroidBoxes, c, 6);
+            Boxes.clear(bounds, b);
+            Boxes.clear(centroidBoxes, c);
             for (int i = start; i < end; ++i) {
-                growBox(bounds, b, boxes, 6 * i);
+                Boxes.grow(bounds, b, boxes, 6 * i);
                 growByPoint(centroidBoxes, c, i);
             }
         }
 
         /** Grows the box at b around the centroid of the body at place i. */
         private void growByPoint(double[] box, int b, int i) {
-            for (int k = 0; k < 3; ++k) {
-                box[b + k] = Math.min(box[b + k], centroids[3 * i + k]);
-                box[b + 3 + k] = Math.max(box[b + 3 + k], centroids[3 * i + k]);
-            }
+            Boxes.include(box, b, centroids[3 * i], centroids[3 * i + 1], centroids[3 * i + 2]);
         }
 
         /** Sets the box at b of target around the boxes of bins [from, to) of bins. */
         private void unionOfBins(double[] bins, int from, int to, double[] target, int b) {
-            System.arraycopy(EMPTY_BOX, 0, target, b, 6);
+            Boxes.clear(target, b);
             for (int k = from; k < to; ++k)
-                growBox(target, b, bins, 6 * k);
+                Boxes.grow(target, b, bins, 6 * k);
         }
 
         private int widestAxis(double[] box, int b) {
@@ -317,32 +311,32 @@ final class BvhBuilder {
         private int bestSplit(int node, int start, int end, int axis, double low, double binsPerUnit) {
             Arrays.fill(binCounts, 0);
             for (int k = 0; k < BINS; ++k) {
-                System.arraycopy(EMPTY_BOX, 0, binBoxes, 6 * k, 6);
-                System.arraycopy(EMPTY_BOX, 0, binCentroids, 6 * k, 6);
+                Boxes.clear(binBoxes, 6 * k);
+                Boxes.clear(binCentroids, 6 * k);
             }
             for (int i = start; i < end; ++i) {
                 int k = binOf(i, axis, low, binsPerUnit);
                 ++binCounts[k];
-                growBox(binBoxes, 6 * k, boxes, 6 * i);
+                Boxes.grow(binBoxes, 6 * k, boxes, 6 * i);
                 growByPoint(binCentroids, 6 * k, i);
             }
-            System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
+            Boxes.clear(sweep, 0);
             for (int k = BINS - 1; k > 0; --k) {
-                growBox(sweep, 0, binBoxes, 6 * k);
-                rightAreas[k] = area(sweep, 0);
+                Boxes.grow(sweep, 0, binBoxes, 6 * k);
+                rightAreas[k] = Boxes.halfArea(sweep, 0);
             }
-            System.arraycopy(EMPTY_BOX, 0, sweep, 0, 6);
+            Boxes.clear(sweep, 0);
             int leftCount = 0;
             int best = -1;
             // split when TRAVERSAL_COST·A + Σ n·A(child) beats the leaf's count·A
-            double bestCost = (end - start - TRAVERSAL_COST) * area(bounds, 6 * node);
+            double bestCost = (end - start - TRAVERSAL_COST) * Boxes.halfArea(bounds, 6 * node);
             for (int k = 0; k < BINS - 1; ++k) {
-                growBox(sweep, 0, binBoxes, 6 * k);
+                Boxes.grow(sweep, 0, binBoxes, 6 * k);
                 leftCount += binCounts[k];
                 int rightCount = end - start - leftCount;
                 if (leftCount == 0 || rightCount == 0)
                     continue;
-                double cost = leftCount * area(sweep, 0) + rightCount * rightAreas[k + 1];
+                double cost = leftCount * Boxes.halfArea(sweep, 0) + rightCount * rightAreas[k + 1];
                 if (cost < bestCost) {
                     bestCost = cost;
                     best = k;
@@ -388,22 +382,7 @@ final class BvhBuilder {
         }
     }
 
-    private static void growBox(double[] box, int b, double[] other, int o) {
-        if (other[o] > other[o + 3])
-            return; // an empty box
-        for (int k = 0; k < 3; ++k) {
-            box[b + k] = Math.min(box[b + k], other[o + k]);
-            box[b + 3 + k] = Math.max(box[b + 3 + k], other[o + 3 + k]);
-        }
-    }
 
-    /** Half the surface area of a box (the factor 2 does not change which split is best). */
-    private static double area(double[] box, int b) {
-        double x = box[b + 3] - box[b];
-        double y = box[b + 4] - box[b + 1];
-        double z = box[b + 5] - box[b + 2];
-        return x * y + y * z + z * x;
-    }
 
     /**
      * Grows a body's box by {@link #PADDING}, so that flat bodies are hit.

@@ -76,7 +76,7 @@ final class HoleCaps {
         }
         double[] centroids = new double[3 * holes];
         int[] counts = new int[holes];
-        double[] boxes = emptyBoxes(holes);
+        double[] boxes = Boxes.empty(holes);
         for (Map.Entry<Integer, Integer> vertex : slots.entrySet()) {
             int h = hole[vertex.getValue()];
             Point3D p = mesh.getVertex(vertex.getKey());
@@ -144,39 +144,22 @@ final class HoleCaps {
         return Math.max(welded[mesh.getVertexIndex(t, k)], welded[mesh.getVertexIndex(t, (k + 1) % 3)]);
     }
 
-    private static double[] emptyBoxes(int count) {
-        double[] boxes = new double[6 * count];
-        for (int b = 0; b < boxes.length; b += 6)
-            for (int k = 0; k < 3; ++k) {
-                boxes[b + k] = Double.POSITIVE_INFINITY;
-                boxes[b + 3 + k] = Double.NEGATIVE_INFINITY;
-            }
-        return boxes;
-    }
-
     /** Adds a vertex of hole h to the sums of the centroids and to the hole's box. */
     private static void add(double[] centroids, double[] boxes, int h, double x, double y, double z) {
-        double[] p = { x, y, z };
-        for (int k = 0; k < 3; ++k) {
-            centroids[3 * h + k] += p[k];
-            boxes[6 * h + k] = Math.min(boxes[6 * h + k], p[k]);
-            boxes[6 * h + 3 + k] = Math.max(boxes[6 * h + 3 + k], p[k]);
-        }
+        centroids[3 * h] += x;
+        centroids[3 * h + 1] += y;
+        centroids[3 * h + 2] += z;
+        Boxes.include(boxes, 6 * h, x, y, z);
     }
 
     /** {@return whether every hole is small next to a box (the holes' boxes not grown yet)} */
     private boolean small(double[] box) {
-        double limit = MAX_HOLE * extent(box);
+        double limit = MAX_HOLE * Boxes.extent(box, 0);
         for (int b = 0; b < boxes.length; b += 6)
             for (int k = 0; k < 3; ++k)
                 if (boxes[b + 3 + k] - boxes[b + k] > limit)
                     return false;
         return true;
-    }
-
-    /** {@return the longest side of a box} */
-    private static double extent(double[] box) {
-        return Math.max(box[3] - box[0], Math.max(box[4] - box[1], box[5] - box[2]));
     }
 
     /**
@@ -186,7 +169,7 @@ final class HoleCaps {
     private boolean fits(TriangleMesh mesh, double[] partBox) {
         if (!small(partBox))
             return false;
-        double grow = GROW * extent(partBox);
+        double grow = GROW * Boxes.extent(partBox, 0);
         for (int b = 0; b < boxes.length; b += 6)
             for (int k = 0; k < 3; ++k) {
                 boxes[b + k] -= grow;
@@ -200,15 +183,11 @@ final class HoleCaps {
 
     /** {@return the box around some of a mesh's triangles} */
     private static double[] boxOf(TriangleMesh mesh, int[] triangles) {
-        double[] box = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+        double[] box = Boxes.empty(1);
         double[] one = new double[6];
         for (int t : triangles) {
             mesh.bounds(t, one, 0);
-            for (int k = 0; k < 3; ++k) {
-                box[k] = Math.min(box[k], one[k]);
-                box[3 + k] = Math.max(box[3 + k], one[3 + k]);
-            }
+            Boxes.grow(box, 0, one, 0);
         }
         return box;
     }
