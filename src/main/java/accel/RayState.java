@@ -157,27 +157,21 @@ public final class RayState {
         double far = Math.min(Math.min(farX, farY), Math.min(farZ, maxT));
         if (near <= far)
             return near;
-        return near == near && far == far ? MISSED : slabEntrySkippingNaN(x0, y0, z0, x1, y1, z1, maxT);
+        return near == near && far == far ? MISSED : slabEntrySkippingNaN(nearX, farX, nearY, farY, nearZ, farZ, maxT);
     }
 
     /**
-     * {@link #slabEntry} for a ray lying exactly in a face's plane: the comparisons below skip a slab's
-     * NaN, so the slab (closed) does not restrict the interval.
+     * {@link #slabEntry} for a ray lying exactly in a face's plane, from the slabs' entry and exit
+     * distances: the comparisons skip a slab's NaN, so the slab (closed) does not restrict the interval.
      */
-    private double slabEntrySkippingNaN(double x0, double y0, double z0, double x1, double y1, double z1,
-                                        double maxT) {
-        double near = ((ix < 0 ? x1 : x0) - ox) * ix;
-        double far = ((ix < 0 ? x0 : x1) - ox) * ix;
-        near = near > 0 ? near : 0;
-        far = far < maxT ? far : maxT;
-        double lo = ((iy < 0 ? y1 : y0) - oy) * iy;
-        double hi = ((iy < 0 ? y0 : y1) - oy) * iy;
-        near = lo > near ? lo : near;
-        far = hi < far ? hi : far;
-        lo = ((iz < 0 ? z1 : z0) - oz) * iz;
-        hi = ((iz < 0 ? z0 : z1) - oz) * iz;
-        near = lo > near ? lo : near;
-        far = hi < far ? hi : far;
+    private static double slabEntrySkippingNaN(double nearX, double farX, double nearY, double farY, double nearZ,
+                                               double farZ, double maxT) {
+        double near = nearX > 0 ? nearX : 0;
+        double far = farX < maxT ? farX : maxT;
+        near = nearY > near ? nearY : near;
+        far = farY < far ? farY : far;
+        near = nearZ > near ? nearZ : near;
+        far = farZ < far ? farZ : far;
         return near <= far ? near : MISSED;
     }
 
