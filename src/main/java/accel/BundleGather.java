@@ -130,13 +130,13 @@ final class BundleGather {
                 double[] data = query.gatheredTriangles;
                 if (part >= 0) {
                     TriangleMesh mesh = (TriangleMesh) bodies.owner(b);
-                    mesh.triangleVertices(part, data, d);
-                    data[d + TriangleMesh.TRIANGLE_VERTICES] = bodies.kT(mesh, part);
+                    mesh.triangleData(part, data, d);
+                    data[d + TriangleMesh.TRIANGLE_DATA] = bodies.kT(mesh, part);
                 }
                 query.gathered[slot] = part >= 0 ? -1 : b;
                 query.gatheredCount = slot + 1;
                 if (frustum.hasOrigins())
-                    listByOrigins(query, slot, part >= 0 ? frustum.originsBehind(data, d, d + 3, d + 6) : 0);
+                    listByOrigins(query, slot, part >= 0 ? frustum.originsBehind(data, d) : 0);
             }
         return true;
     }
@@ -253,7 +253,7 @@ final class BundleGather {
             return ray.attenuateBy(bodies.owner(b));
         double[] data = query.gatheredTriangles;
         int d = Query.GATHERED_TRIANGLE * i;
-        return Triangle.intersect(data, d, d + 3, d + 6, data[d + 9], ray) == Geometry.NO_HIT
-                || ray.attenuate(data[d + TriangleMesh.TRIANGLE_VERTICES]);
+        return Triangle.intersect(ray, data, d, data[d + 9]) == Geometry.NO_HIT
+                || ray.attenuate(data[d + TriangleMesh.TRIANGLE_DATA]);
     }
 }

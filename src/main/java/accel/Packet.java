@@ -16,8 +16,8 @@ final class Packet {
     final int[] lastRays;
     /** The rays of the packet that meet the leaf a packet walk is at, in order. */
     int[] leafRays = new int[0];
-    /** A mesh's triangle's vertices and parallel limit, read once per leaf of a packet walk. */
-    final double[] triangle = new double[TriangleMesh.TRIANGLE_VERTICES];
+    /** A mesh's triangle's data (p1, its edges, the parallel limit), read once per leaf of a packet walk. */
+    final double[] triangle = new double[TriangleMesh.TRIANGLE_DATA];
 
     /** Creates an empty packet for walks of a tree no deeper than stackSize − 2. */
     Packet(int stackSize) {

@@ -265,7 +265,7 @@ final class PacketWalk {
      */
     private static int triangleOnPacket(Packet packet, TriangleMesh mesh, int part, double kT, int count) {
         double[] data = packet.triangle;
-        mesh.triangleVertices(part, data, 0);
+        mesh.triangleData(part, data, 0);
         double limit = data[9];
         int[] list = packet.leafRays;
         RayState[] rays = packet.rays;
@@ -273,7 +273,7 @@ final class PacketWalk {
         for (int i = 0; i < count; ++i) {
             int r = list[i];
             RayState ray = rays[r];
-            if (Triangle.intersect(data, 0, 3, 6, limit, ray) == Geometry.NO_HIT || through(ray, ray.attenuate(kT)))
+            if (Triangle.intersect(ray, data, 0, limit) == Geometry.NO_HIT || through(ray, ray.attenuate(kT)))
                 list[kept++] = r;
         }
         return kept;

@@ -14,9 +14,9 @@ public final class Query {
     static final int MAX_GATHERED = 32;
     /**
      * The numbers a gathered mesh triangle keeps for the bundle's rays: the ten of its test (see
-     * {@link TriangleMesh#triangleVertices}) and its mesh's {@code kT}.
+     * {@link TriangleMesh#triangleData}) and its mesh's {@code kT}.
      */
-    static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_VERTICES + 1;
+    static final int GATHERED_TRIANGLE = TriangleMesh.TRIANGLE_DATA + 1;
 
     /** The single ray of the next query ({@link #setRay}). */
     final RayState ray = new RayState();

@@ -93,6 +93,24 @@ final class RayOrigins {
     }
 
     /**
+     * The origins a triangle lies behind, as {@link #behind(double[], int, int, int, double)} finds
+     * them, from the triangle's data: p1 and the edges e1 = p2 − p1 and e2 = p3 − p1 (the same numbers
+     * as its vertices give, see {@link geometries.TriangleMesh#triangleData}).
+     *
+     * @param data     the triangle's data, three doubles each for p1, e1 and e2
+     * @param at       where p1's x lies in data
+     * @param rounding the rounding margin
+     * @return {@link ShadowFrustum#ABOVE}, {@link ShadowFrustum#BELOW}, both or 0
+     */
+    int behind(double[] data, int at, double rounding) {
+        if (!set)
+            return 0;
+        return behind(along(data[at] - originX, data[at + 1] - originY, data[at + 2] - originZ),
+                along(data[at + 3], data[at + 4], data[at + 5]), along(data[at + 6], data[at + 7], data[at + 8]),
+                rounding);
+    }
+
+    /**
      * Whether a triangle lies behind both origins, as {@link #behind} takes it: then only a ray that
      * starts at neither may meet it. Remembers that it said so ({@link #leftBehind}).
      *

@@ -1,6 +1,7 @@
 package accel;
 
 import geometries.Geometry;
+import geometries.TriangleMesh;
 
 import primitives.Point3D;
 import primitives.Ray;
@@ -37,6 +38,8 @@ public final class RayState {
     Geometry geometry;
     /** The part of {@link #geometry} hit (a mesh's triangle), or −1. */
     int part;
+    /** Room for the data of a mesh's triangle under test, made at the first. */
+    private double[] triangle;
 
     /**
      * Sets the ray.
@@ -59,6 +62,16 @@ public final class RayState {
         this.dz = dz;
         this.maxT = maxT;
         return this;
+    }
+
+    /**
+     * {@return room for one triangle's data ({@link TriangleMesh#TRIANGLE_DATA} doubles), so that a
+     * mesh's triangle is tested on the ray without an allocation after the first}
+     */
+    public double[] triangleScratch() {
+        if (triangle == null)
+            triangle = new double[TriangleMesh.TRIANGLE_DATA];
+        return triangle;
     }
 
     /** {@return the ray as the course's {@link Ray}} */

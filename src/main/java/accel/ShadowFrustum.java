@@ -311,9 +311,12 @@ public final class ShadowFrustum {
         return origins.originOf(ox, oy, oz, dx, dy, dz);
     }
 
-    /** {@return the ray origins a triangle lies behind, see {@link RayOrigins#behind}} */
-    int originsBehind(double[] vertices, int p1, int p2, int p3) {
-        return origins.behind(vertices, p1, p2, p3, rounding);
+    /**
+     * {@return the ray origins a triangle lies behind, see {@link RayOrigins#behind(double[], int, double)}:
+     * its data, p1, e1 and e2, at data[at]}
+     */
+    int originsBehind(double[] data, int at) {
+        return origins.behind(data, at, rounding);
     }
 
     /** {@return whether a triangle lies behind both ray origins, see {@link RayOrigins#behindBoth}} */

@@ -19,6 +19,8 @@ public class Triangle extends Polygon {
 
     /** The |determinant| of the intersection test below which a ray is taken as parallel to the triangle. */
     private final double parallelLimit;
+    /** The numbers of the renderer's test: p1 and the edges p2 − p1 and p3 − p1 (see {@link #intersect}). */
+    private final double[] testData;
 
     /**
      * Creates a triangle.
@@ -31,7 +33,10 @@ public class Triangle extends Polygon {
     public Triangle(Point3D p1, Point3D p2, Point3D p3) {
         super(p1, p2, p3);
         double[] v = vertexCoordinates;
-        parallelLimit = parallelLimit(v[3] - v[0], v[4] - v[1], v[5] - v[2], v[6] - v[0], v[7] - v[1], v[8] - v[2]);
+        testData = new double[] { v[0], v[1], v[2], v[3] - v[0], v[4] - v[1], v[5] - v[2], v[6] - v[0], v[7] - v[1],
+                v[8] - v[2] };
+        double[] d = testData;
+        parallelLimit = parallelLimit(d[3], d[4], d[5], d[6], d[7], d[8]);
     }
 
     /**
@@ -52,7 +57,7 @@ public class Triangle extends Polygon {
 
     @Override
     public double nearestHit(RayState ray) {
-        return intersect(vertexCoordinates, 0, 3, 6, parallelLimit, ray);
+        return intersect(ray, testData, 0, parallelLimit);
     }
 
     /** The number of doubles {@link #project} writes. */
@@ -98,33 +103,29 @@ public class Triangle extends Polygon {
     }
 
     /**
-     * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle p1 p2 p3, its
-     * edges e1 = p2 − p1 and e2 = p3 − p1: closed, its edges and vertices hit within a barycentric
-     * tolerance. Every triangle of the renderer's path, a {@link Triangle} or one of a
-     * {@link TriangleMesh}, is tested here, on its vertices' own numbers, so the same triangle gets the
-     * same answer whoever holds it. At 391 bytes of bytecode it is above the JIT's limit for inlining
-     * hot methods (325), so each test is a call (forced inline with a JVM flag, the real meshes' fastest
-     * frames were 4–6 % faster).
+     * The Möller–Trumbore test of a ray (origin o, unit direction d) against a triangle given by its
+     * first vertex p1 and its edges e1 = p2 − p1 and e2 = p3 − p1: closed, its edges and vertices hit
+     * within a barycentric tolerance. Every triangle of the renderer's path, a {@link Triangle} or one
+     * of a {@link TriangleMesh}, is tested here, on the numbers {@link TriangleMesh#triangleData}
+     * writes, so the same triangle gets the same answer whoever holds it. The kernel is 322 bytes of
+     * bytecode, under the JIT's limit for inlining hot methods (325), so each test is compiled into its
+     * caller's loop: hence the ray as the first parameter (its seven reads take the one-byte load) and
+     * the barycentric tests folded into one comparison.
      *
-     * @param vertices      the vertices' coordinates, three doubles each
-     * @param p1            where the first vertex's x lies in vertices
-     * @param p2            where the second vertex's x lies
-     * @param p3            where the third vertex's x lies
+     * @param ray           the ray: origin, unit direction and the largest distance that counts
+     * @param data          the triangle's data: p1, e1 and e2, three doubles each
+     * @param at            where p1's x lies in data
      * @param parallelLimit the |determinant| below which the ray is taken as parallel, see
      *                      {@link #parallelLimit}
-     * @param ray           the ray: origin, unit direction and the largest distance that counts
      * @return the distance t in (0, maxT], or {@link #NO_HIT} when the ray misses
      */
-    public static double intersect(double[] vertices, int p1, int p2, int p3, double parallelLimit, RayState ray) {
-        double p1x = vertices[p1];
-        double p1y = vertices[p1 + 1];
-        double p1z = vertices[p1 + 2];
-        double e1x = vertices[p2] - p1x;
-        double e1y = vertices[p2 + 1] - p1y;
-        double e1z = vertices[p2 + 2] - p1z;
-        double e2x = vertices[p3] - p1x;
-        double e2y = vertices[p3 + 1] - p1y;
-        double e2z = vertices[p3 + 2] - p1z;
+    public static double intersect(RayState ray, double[] data, int at, double parallelLimit) {
+        double e1x = data[at + 3];
+        double e1y = data[at + 4];
+        double e1z = data[at + 5];
+        double e2x = data[at + 6];
+        double e2y = data[at + 7];
+        double e2z = data[at + 8];
         double dx = ray.dx();
         double dy = ray.dy();
         double dz = ray.dz();
@@ -133,17 +134,19 @@ public class Triangle extends Polygon {
         double pz = dx * e2y - dy * e2x;
         double det = e1x * px + e1y * py + e1z * pz;
         double inv = 1.0 / det;
-        double tx = ray.ox() - p1x;
-        double ty = ray.oy() - p1y;
-        double tz = ray.oz() - p1z;
+        double tx = ray.ox() - data[at];
+        double ty = ray.oy() - data[at + 1];
+        double tz = ray.oz() - data[at + 2];
         double u = (tx * px + ty * py + tz * pz) * inv;
         double qx = ty * e1z - tz * e1y;
         double qy = tz * e1x - tx * e1z;
         double qz = tx * e1y - ty * e1x;
         double v = (dx * qx + dy * qy + dz * qz) * inv;
-        // one branch for the four tests (| evaluates them all): their outcomes are hard to predict
-        if (Math.abs(det) < parallelLimit | u < -BARYCENTRIC_TOLERANCE | u > 1 + BARYCENTRIC_TOLERANCE
-                | v < -BARYCENTRIC_TOLERANCE | u + v > 1 + BARYCENTRIC_TOLERANCE)
+        // A parallel ray is rare, a predictable branch. The four barycentric tests (u, v ≥ −τ and
+        // u, u + v ≤ 1 + τ), hard to predict, are one comparison: for finite a and b, a − b > 0 exactly
+        // when a > b (IEEE subtraction keeps the sign), so the largest of the margins decides.
+        if (Math.abs(det) < parallelLimit || Math.max(-BARYCENTRIC_TOLERANCE - Math.min(u, v),
+                Math.max(u, u + v) - (1 + BARYCENTRIC_TOLERANCE)) > 0)
             return NO_HIT;
         return hitWithin(alignZero((e2x * qx + e2y * qy + e2z * qz) * inv), ray.maxT());
     }

@@ -38,8 +38,6 @@ import static primitives.Util.requireNonNull;
 public final class TriangleMesh extends Geometry {
     /** The number of doubles of a triangle's data for {@link #triangleData}. */
     public static final int TRIANGLE_DATA = 10;
-    /** The number of doubles of a triangle's test for {@link #triangleVertices}. */
-    public static final int TRIANGLE_VERTICES = 10;
     /** The tolerance, relative to a triangle's longest edge, of a point on it (see {@link #getNormal(Point3D)}). */
     private static final double ON_TRIANGLE_TOLERANCE = 1e-9;
 
@@ -433,14 +431,17 @@ public final class TriangleMesh extends Geometry {
 
     /**
      * The renderer's test of one triangle: closed, the test of its {@link Triangle}
-     * ({@link Triangle#intersect}) on the same numbers.
+     * ({@link Triangle#intersect}) on the same numbers, its {@link #triangleData} written into the
+     * ray's scratch space.
      *
      * @param t   the triangle's index
      * @param ray the ray: origin, unit direction and the largest distance that counts
      * @return the distance in (0, maxT], or {@link #NO_HIT}
      */
     public double triangleHit(int t, RayState ray) {
-        return Triangle.intersect(vertices, corner(t, 0), corner(t, 1), corner(t, 2), parallelLimits[t], ray);
+        double[] data = ray.triangleScratch();
+        triangleData(t, data, 0);
+        return Triangle.intersect(ray, data, 0, data[9]);
     }
 
     /**
@@ -485,22 +486,9 @@ public final class TriangleMesh extends Geometry {
     }
 
     /**
-     * Writes the numbers of triangle t's test into an array: its three vertices and its parallel limit,
-     * so that {@link Triangle#intersect} on them gives exactly {@link #triangleHit}.
-     *
-     * @param t      the triangle's index
-     * @param target the array
-     * @param offset where the {@value #TRIANGLE_VERTICES} numbers go: p1, p2, p3, then the limit
-     */
-    public void triangleVertices(int t, double[] target, int offset) {
-        for (int k = 0; k < 3; ++k)
-            System.arraycopy(vertices, corner(t, k), target, offset + 3 * k, 3);
-        target[offset + 9] = parallelLimits[t];
-    }
-
-    /**
-     * Writes the data of triangle t into an array: the first vertex p1, the edges p2 − p1 and p3 − p1
-     * (as {@link Triangle#project} takes them), and the parallel limit.
+     * Writes the data of triangle t into an array: the first vertex p1, the edges p2 − p1 and p3 − p1,
+     * and the parallel limit, as the renderer's test ({@link Triangle#intersect}, which gives exactly
+     * {@link #triangleHit} on them) and {@link Triangle#project} take them.
      *
      * @param t      the triangle's index
      * @param target the array

@@ -28,6 +28,7 @@ import static testutil.TestBundles.rayTransmittance;
 import static testutil.TestBundles.shadowRays;
 import static testutil.TestBundles.squarePoint;
 import static testutil.TestBundles.stray;
+import static testutil.TestBundles.triangleData;
 import static testutil.TestRandom.randomUnit;
 import static testutil.TestScenes.centroid;
 import static testutil.TestScenes.emptyComposites;
@@ -581,7 +582,7 @@ class BundleGatherTest {
             // (expects kept)
             for (int t = 2; t < shelves.size(); ++t) {
                 double[] v = shelves.get(t);
-                assertEquals(v[2] > 0 ? ShadowFrustum.BELOW : ShadowFrustum.ABOVE, frustum.originsBehind(v, 0, 3, 6),
+                assertEquals(v[2] > 0 ? ShadowFrustum.BELOW : ShadowFrustum.ABOVE, frustum.originsBehind(triangleData(0, v), 0),
                         "TC02: " + kind + ": shelf triangle " + t + " behind one start");
                 assertFalse(frustum.behindOrigins(v, 0, 3, 6), "TC02: " + kind + ": shelf " + t + " not behind both");
                 assertTrue(surface.mayMeet(t, frustum), "TC02: " + kind + ": shelf " + t + " must be kept");

@@ -333,13 +333,13 @@ final class BvhFixtures {
         // the mesh's triangles the gather kept (box and own test), and the rays that skip them
         boolean skipping = false;
         double[] box = new double[6];
-        double[] numbers = new double[TriangleMesh.TRIANGLE_VERTICES];
+        double[] data = new double[TriangleMesh.TRIANGLE_DATA];
         for (int k = 0; k < mesh.getTrianglesCount(); ++k) {
             mesh.bounds(k, box, 0);
             if (!frustum.meetsBox(box, 0) || !mesh.mayMeet(k, frustum))
                 continue;
-            mesh.triangleVertices(k, numbers, 0);
-            int behind = frustum.originsBehind(numbers, 0, 3, 6);
+            mesh.triangleData(k, data, 0);
+            int behind = frustum.originsBehind(data, 0);
             for (double[] ray : rays)
                 if ((frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]) & behind) != 0) {
                     ++counts.skipped;

@@ -3,6 +3,9 @@ package accel;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestBundles.triangleData;
+
+import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
@@ -75,5 +78,36 @@ class RayOriginsTest {
         RayOrigins none = new RayOrigins();
         assertEquals(0, none.behind(flat(0), 0, 3, 6, ROUNDING), "TC12: no origins");
         assertFalse(none.behindBoth(flat(0), 0, 3, 6, ROUNDING), "TC12: no origins");
+    }
+
+    /**
+     * Test method for {@link RayOrigins#behind(double[], int, double)}: a triangle's data (p1 and its
+     * edges) give the answer its vertices give.
+     */
+    @Test
+    void testBehindData() {
+        RayOrigins origins = origins();
+        Random rnd = new Random(77);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: 300 random triangles near p, their data at an offset: the vertices' answer, each of
+        // the four answers met
+        int[] answers = new int[4];
+        for (int k = 0; k < 300; ++k) {
+            double[] v = new double[9];
+            for (int c = 0; c < 9; ++c)
+                v[c] = (c % 3 == 0 ? 1 : c % 3 == 1 ? 2 : 3) + (c % 3 == 2 ? 0.3 : 2) * (2 * rnd.nextDouble() - 1);
+            int expected = origins.behind(v, 0, 3, 6, ROUNDING);
+            assertEquals(expected, origins.behind(triangleData(2, v), 2, ROUNDING), "TC01: triangle " + k);
+            ++answers[expected];
+        }
+        for (int a = 0; a < 4; ++a)
+            assertTrue(answers[a] > 0, "TC01: answer " + a + " never met");
+
+        // ===== Boundary Values Tests =====
+        // TC11: no origins set: 0
+        assertEquals(0, new RayOrigins().behind(triangleData(0, flat(0)), 0, ROUNDING), "TC11: no origins");
+        // TC12: in the plane of p + n: BELOW only, as from the vertices
+        assertEquals(ShadowFrustum.BELOW, origins.behind(triangleData(0, flat(0.1)), 0, ROUNDING), "TC12: at p + n");
     }
 }

@@ -14,6 +14,7 @@ import static testutil.TestBundles.segmentPoint;
 import static testutil.TestBundles.setPyramid;
 import static testutil.TestBundles.standard;
 import static testutil.TestBundles.strayVector;
+import static testutil.TestBundles.triangleData;
 import static testutil.TestScenes.triangle;
 
 import java.util.Arrays;
@@ -528,16 +529,14 @@ class ShadowFrustumTest {
     }
 
     /**
-     * The starts a triangle lies behind, given by its vertices, placed after three dummy numbers.
+     * The starts a triangle lies behind, given by its vertices, its data placed after three zeros.
      *
      * @param frustum the frustum
      * @param v       the vertices p1, p2, p3
      * @return {@link ShadowFrustum#originsBehind} of p1, p2 − p1, p3 − p1
      */
     private static int originsBehind(ShadowFrustum frustum, double... v) {
-        double[] shifted = new double[12];
-        System.arraycopy(v, 0, shifted, 3, 9);
-        return frustum.originsBehind(shifted, 3, 6, 9);
+        return frustum.originsBehind(triangleData(3, v), 3);
     }
 
     /**

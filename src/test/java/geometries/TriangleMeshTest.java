@@ -335,37 +335,21 @@ class TriangleMeshTest {
     }
 
     /**
-     * Test method for {@link TriangleMesh#triangleVertices} and {@link TriangleMesh#triangleHit}: a
-     * triangle's numbers for testing it on many rays are its vertices and its parallel limit, and the
-     * test on them is the one of the mesh and of a {@link Triangle} of the same vertices, to the bit.
+     * Test method for {@link TriangleMesh#triangleHit}: the renderer's test of a mesh's triangle is
+     * the test on its data and the test of a {@link Triangle} of the same vertices, to the bit.
      */
     @Test
-    void testTriangleVertices() {
+    void testTriangleHit() {
         TriangleMesh mesh = benchmark.SphereMesh.mesh(new Point3D(1, -2, 3), 5, 6, 8);
-        double[] numbers = new double[TriangleMesh.TRIANGLE_VERTICES + 1];
-        numbers[TriangleMesh.TRIANGLE_VERTICES] = -7;
         double[] data = new double[TriangleMesh.TRIANGLE_DATA];
         Random rnd = new Random(1610);
         // ===== Equivalence Partitions Tests =====
-        // TC01: every triangle: its three vertices in order, then the parallel limit of triangleData
-        for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
-            mesh.triangleVertices(t, numbers, 0);
-            mesh.triangleData(t, data, 0);
-            for (int k = 0; k < 3; ++k) {
-                Point3D p = mesh.getVertex(mesh.getVertexIndex(t, k));
-                assertEquals(p.getX(), numbers[3 * k], 0, "TC01: triangle " + t + ", vertex " + k + ", x");
-                assertEquals(p.getY(), numbers[3 * k + 1], 0, "TC01: triangle " + t + ", vertex " + k + ", y");
-                assertEquals(p.getZ(), numbers[3 * k + 2], 0, "TC01: triangle " + t + ", vertex " + k + ", z");
-            }
-            assertEquals(data[9], numbers[9], 0, "TC01: triangle " + t + ", the parallel limit");
-        }
-        // TC02: 500 random rays at points in and around random triangles: the Möller–Trumbore test on
-        // the numbers, the mesh's triangleHit and the Triangle's nearestHit agree to the bit, hit or miss
+        // TC01: 500 random rays at points in and around random triangles: the Möller–Trumbore test on
+        // the data, the mesh's triangleHit and the Triangle's nearestHit agree to the bit, hit or miss
         int hits = 0;
         for (int r = 0; r < 500; ++r) {
             int t = rnd.nextInt(mesh.getTrianglesCount());
             mesh.triangleData(t, data, 0);
-            mesh.triangleVertices(t, numbers, 0);
             double u = 1.4 * rnd.nextDouble() - 0.2;
             double v = 1.4 * rnd.nextDouble() - 0.2;
             Point3D target = new Point3D(data[0] + u * data[3] + v * data[6], data[1] + u * data[4] + v * data[7],
@@ -374,25 +358,32 @@ class TriangleMeshTest {
             RayState ray = rayState(rayFromTo(o, target));
             ray.set(ray.ox(), ray.oy(), ray.oz(), ray.dx(), ray.dy(), ray.dz(), 30 * rnd.nextDouble());
             double expected = mesh.triangleHit(t, ray);
-            assertEquals(expected, Triangle.intersect(numbers, 0, 3, 6, numbers[9], ray), 0,
-                    "TC02: ray " + r + " at triangle " + t + ", on its numbers");
+            assertEquals(expected, Triangle.intersect(ray, data, 0, data[9]), 0,
+                    "TC01: ray " + r + " at triangle " + t + ", on its data");
             Triangle own = new Triangle(mesh.getVertex(mesh.getVertexIndex(t, 0)),
                     mesh.getVertex(mesh.getVertexIndex(t, 1)), mesh.getVertex(mesh.getVertexIndex(t, 2)));
-            assertEquals(expected, own.nearestHit(ray), 0, "TC02: ray " + r + " at triangle " + t + ", as a Triangle");
+            assertEquals(expected, own.nearestHit(ray), 0, "TC01: ray " + r + " at triangle " + t + ", as a Triangle");
             if (expected < Geometry.NO_HIT)
                 ++hits;
         }
-        assertTrue(hits > 50 && hits < 450, "TC02: too few hits or misses (" + hits + " hits)");
+        assertTrue(hits > 50 && hits < 450, "TC01: too few hits or misses (" + hits + " hits)");
 
         // ===== Boundary Values Tests =====
-        // TC11: the array's number past the test's numbers is left as it was (−7)
-        assertEquals(-7, numbers[TriangleMesh.TRIANGLE_VERTICES], 0, "TC11: a number past them must be left alone");
-        // TC12: written at an offset: the same numbers there
-        double[] two = new double[2 * TriangleMesh.TRIANGLE_VERTICES];
-        mesh.triangleVertices(5, two, TriangleMesh.TRIANGLE_VERTICES);
-        mesh.triangleVertices(5, numbers, 0);
-        for (int k = 0; k < TriangleMesh.TRIANGLE_VERTICES; ++k)
-            assertEquals(numbers[k], two[TriangleMesh.TRIANGLE_VERTICES + k], 0, "TC12: number " + k + " at the offset");
+        // TC11: one ray from the centre tested on every triangle in turn, its scratch space written
+        // over each time: each answer the Triangle's, one hit (or two, through an edge) at the radius 5
+        RayState ray = rayState(rayFromTo(new Point3D(1, -2, 3), new Point3D(1.3, -1.6, 20)));
+        int crossed = 0;
+        for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
+            Triangle own = new Triangle(mesh.getVertex(mesh.getVertexIndex(t, 0)),
+                    mesh.getVertex(mesh.getVertexIndex(t, 1)), mesh.getVertex(mesh.getVertexIndex(t, 2)));
+            double t1 = mesh.triangleHit(t, ray);
+            assertEquals(own.nearestHit(ray), t1, 0, "TC11: triangle " + t + " from the centre");
+            if (t1 < Geometry.NO_HIT) {
+                ++crossed;
+                assertTrue(t1 > 4 && t1 <= 5, "TC11: the hit lies inside the radius 5, at " + t1);
+            }
+        }
+        assertTrue(crossed == 1 || crossed == 2, "TC11: the ray crosses the sphere's mesh once, not " + crossed);
     }
 
     /**

@@ -18,6 +18,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 import accel.Query;
+import accel.RayState;
 import geometries.Intersectable.GeoPoint;
 import primitives.Point3D;
 import primitives.Ray;
@@ -499,5 +500,100 @@ class TriangleTest {
         Vector e2 = new Vector(data[6], data[7], data[8]);
         Vector n = e1.crossProduct(e2).normalize();
         return new Point3D(data[0], data[1], data[2]).add(e1.scale(u)).add(e2.scale(v)).add(n.scale(h));
+    }
+
+    /**
+     * Test method for {@link Triangle#intersect}: the renderer's closed Möller–Trumbore test on the
+     * data of P1, P2, P3, whose one comparison decides as the four barycentric tests do.
+     */
+    @Test
+    void testIntersect() {
+        double[] data = data(P1, P2, P3);
+        double limit = Triangle.parallelLimit(data[3], data[4], data[5], data[6], data[7], data[8]);
+        double third = 1.0 / 3;
+        RayState ray = new RayState();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: down from (⅓, ⅓, 5) through the inside, to (⅓, ⅓, ⅓): t = 14/3
+        ray.set(third, third, 5, 0, 0, -1, 10);
+        assertEquals(14.0 / 3, Triangle.intersect(ray, data, 0, limit), DELTA, "TC01: through the inside");
+        // TC02: down beside the triangle, at (0.8, 0.8): a miss
+        ray.set(0.8, 0.8, 5, 0, 0, -1, 10);
+        assertEquals(Geometry.NO_HIT, Triangle.intersect(ray, data, 0, limit), "TC02: beside it");
+        // TC03: the triangle beyond the distance that counts, and behind the ray: misses
+        ray.set(third, third, 5, 0, 0, -1, 4);
+        assertEquals(Geometry.NO_HIT, Triangle.intersect(ray, data, 0, limit), "TC03: beyond maxT");
+        ray.set(third, third, 5, 0, 0, 1, 10);
+        assertEquals(Geometry.NO_HIT, Triangle.intersect(ray, data, 0, limit), "TC03: behind the origin");
+        // TC04: 4000 rays from random points to points around the triangle's edges, within a few
+        // tolerances of u = 0, v = 0 and u + v = 1, the data placed at an offset: the answer of the
+        // four comparisons (expects both hits and misses)
+        Random rnd = new Random(4242);
+        double[] shifted = new double[13];
+        System.arraycopy(data, 0, shifted, 4, 9);
+        int hits = 0;
+        for (int r = 0; r < 4000; ++r) {
+            double u = edgeWeight(rnd, r % 3 == 0);
+            double v = r % 3 == 1 ? edgeWeight(rnd, true) : r % 3 == 2 ? 1 - u + edgeWeight(rnd, true) : rnd.nextDouble();
+            Point3D target = new Point3D(1 - u - v, u, v);
+            Point3D from = new Point3D(rnd.nextDouble() * 4 - 2, rnd.nextDouble() * 4 - 2, rnd.nextDouble() * 4 - 2);
+            if (from.distance(target) < 0.1)
+                continue;
+            Vector d = target.subtract(from).normalize();
+            ray.set(from.getX(), from.getY(), from.getZ(), d.getX(), d.getY(), d.getZ(), 10);
+            double t = Triangle.intersect(ray, shifted, 4, limit);
+            assertEquals(fourComparisons(data, limit, ray), t, 0, "TC04: ray " + r);
+            if (t < Geometry.NO_HIT)
+                ++hits;
+        }
+        assertTrue(hits > 400 && hits < 3600, "TC04: hits and misses both (" + hits + " hits)");
+
+        // ===== Boundary Values Tests =====
+        // TC11: through the middle of edge P2P3 and through the vertex P1: hits (the test is closed)
+        ray.set(0, 0.5, 5, 0, 0, -1, 10);
+        assertEquals(4.5, Triangle.intersect(ray, data, 0, limit), DELTA, "TC11: through an edge");
+        ray.set(1, 0, 5, 0, 0, -1, 10);
+        assertEquals(5, Triangle.intersect(ray, data, 0, limit), DELTA, "TC11: through a vertex");
+        // TC12: a ray in the triangle's plane, through its inside: parallel, a miss
+        Vector along = new Vector(-1, 1, 0).normalize();
+        ray.set(2, -1, 0, along.getX(), along.getY(), along.getZ(), 10);
+        assertEquals(Geometry.NO_HIT, Triangle.intersect(ray, data, 0, limit), "TC12: in the plane");
+        // TC13: the hit at exactly the distance that counts: a hit, the same distance
+        ray.set(third, third, 5, 0, 0, -1, 10);
+        double t = Triangle.intersect(ray, data, 0, limit);
+        ray.set(third, third, 5, 0, 0, -1, t);
+        assertEquals(t, Triangle.intersect(ray, data, 0, limit), 0, "TC13: a hit at maxT counts");
+    }
+
+    /**
+     * {@return a barycentric weight: within a few tolerances of 0 when near, else anywhere in [0, 1]}
+     */
+    private static double edgeWeight(Random rnd, boolean near) {
+        return near ? (rnd.nextDouble() * 6 - 3) * Triangle.BARYCENTRIC_TOLERANCE : rnd.nextDouble();
+    }
+
+    /**
+     * The Möller–Trumbore test with its four barycentric comparisons one by one, the reference for
+     * {@link Triangle#intersect}'s single comparison.
+     */
+    private static double fourComparisons(double[] data, double limit, RayState ray) {
+        double tau = Triangle.BARYCENTRIC_TOLERANCE;
+        double px = ray.dy() * data[8] - ray.dz() * data[7];
+        double py = ray.dz() * data[6] - ray.dx() * data[8];
+        double pz = ray.dx() * data[7] - ray.dy() * data[6];
+        double det = data[3] * px + data[4] * py + data[5] * pz;
+        double inv = 1.0 / det;
+        double tx = ray.ox() - data[0];
+        double ty = ray.oy() - data[1];
+        double tz = ray.oz() - data[2];
+        double u = (tx * px + ty * py + tz * pz) * inv;
+        double qx = ty * data[5] - tz * data[4];
+        double qy = tz * data[3] - tx * data[5];
+        double qz = tx * data[4] - ty * data[3];
+        double v = (ray.dx() * qx + ray.dy() * qy + ray.dz() * qz) * inv;
+        if (Math.abs(det) < limit || u < -tau || u > 1 + tau || v < -tau || u + v > 1 + tau)
+            return Geometry.NO_HIT;
+        double t = primitives.Util.alignZero((data[6] * qx + data[7] * qy + data[8] * qz) * inv);
+        return t > 0 && t <= ray.maxT() ? t : Geometry.NO_HIT;
     }
 }

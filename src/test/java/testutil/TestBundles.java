@@ -346,6 +346,24 @@ public final class TestBundles {
     }
 
     /**
+     * A triangle's data as {@link TriangleMesh#triangleData} writes it, from its vertices: p1, p2 − p1
+     * and p3 − p1 (no parallel limit), after {@code at} zeros.
+     *
+     * @param at where p1 goes
+     * @param v  the vertices p1, p2, p3, three coordinates each
+     * @return the data
+     */
+    public static double[] triangleData(int at, double... v) {
+        double[] data = new double[at + 9];
+        for (int k = 0; k < 3; ++k) {
+            data[at + k] = v[k];
+            data[at + 3 + k] = v[3 + k] - v[k];
+            data[at + 6 + k] = v[6 + k] - v[k];
+        }
+        return data;
+    }
+
+    /**
      * A ray's numbers for the bodies' tests.
      *
      * @param ray {ox, oy, oz, dx, dy, dz, distance}, as {@link #rayFromTo} gives it
