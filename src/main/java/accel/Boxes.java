@@ -45,6 +45,23 @@ final class Boxes {
         }
     }
 
+    /** Grows every box of boxes by a distance on each side. */
+    static void pad(double[] boxes, double by) {
+        for (int b = 0; b < boxes.length; b += 6)
+            for (int k = 0; k < 3; ++k) {
+                boxes[b + k] -= by;
+                boxes[b + 3 + k] += by;
+            }
+    }
+
+    /** {@return the axis (0, 1 or 2 for x, y, z) along which the box at b is longest, the first of equals} */
+    static int widestAxis(double[] boxes, int b) {
+        double x = boxes[b + 3] - boxes[b];
+        double y = boxes[b + 4] - boxes[b + 1];
+        double z = boxes[b + 5] - boxes[b + 2];
+        return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
+    }
+
     /** {@return half the surface area of the box at b (the surface-area heuristic's measure)} */
     static double halfArea(double[] boxes, int b) {
         double x = boxes[b + 3] - boxes[b];

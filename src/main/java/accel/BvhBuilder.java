@@ -242,7 +242,7 @@ final class BvhBuilder {
                 return;
             int count = end - start;
             depth = Math.max(depth, level);
-            int axis = widestAxis(centroidBoxes, c);
+            int axis = Boxes.widestAxis(centroidBoxes, c);
             double low = centroidBoxes[c + axis];
             double extent = centroidBoxes[c + 3 + axis] - low;
             double binsPerUnit = BINS / extent;
@@ -290,13 +290,6 @@ final class BvhBuilder {
             Boxes.clear(target, b);
             for (int k = from; k < to; ++k)
                 Boxes.grow(target, b, bins, 6 * k);
-        }
-
-        private int widestAxis(double[] box, int b) {
-            double x = box[b + 3] - box[b];
-            double y = box[b + 4] - box[b + 1];
-            double z = box[b + 5] - box[b + 2];
-            return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
         }
 
         private int binOf(int i, int axis, double low, double binsPerUnit) {

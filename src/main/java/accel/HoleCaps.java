@@ -169,12 +169,7 @@ final class HoleCaps {
     private boolean fits(TriangleMesh mesh, double[] partBox) {
         if (!small(partBox))
             return false;
-        double grow = GROW * Boxes.extent(partBox, 0);
-        for (int b = 0; b < boxes.length; b += 6)
-            for (int k = 0; k < 3; ++k) {
-                boxes[b + k] -= grow;
-                boxes[b + 3 + k] += grow;
-            }
+        Boxes.pad(boxes, GROW * Boxes.extent(partBox, 0));
         for (int t = 0; t < triangles.length; t += 3)
             if (!wellShaped(centroidOf(triangles[t]), mesh.getVertex(triangles[t + 1]), mesh.getVertex(triangles[t + 2])))
                 return false;

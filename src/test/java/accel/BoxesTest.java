@@ -76,4 +76,34 @@ class BoxesTest {
         assertEquals(0, Boxes.halfArea(boxes, 0), DELTA, "TC11");
         assertEquals(0, Boxes.extent(boxes, 0), DELTA, "TC11");
     }
+
+    /** Test method for {@link Boxes#pad(double[], double)}. */
+    @Test
+    void testPad() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: two boxes padded by 0.5: each side moved out by 0.5
+        double[] boxes = { 0, 0, 0, 1, 2, 3, -1, -1, -1, 1, 1, 1 };
+        Boxes.pad(boxes, 0.5);
+        assertArrayEquals(new double[] { -0.5, -0.5, -0.5, 1.5, 2.5, 3.5, -1.5, -1.5, -1.5, 1.5, 1.5, 1.5 }, boxes,
+                DELTA, "TC01");
+        // ===== Boundary Values Tests =====
+        // TC11: padded by 0: unchanged
+        Boxes.pad(boxes, 0);
+        assertArrayEquals(new double[] { -0.5, -0.5, -0.5, 1.5, 2.5, 3.5, -1.5, -1.5, -1.5, 1.5, 1.5, 1.5 }, boxes,
+                DELTA, "TC11");
+    }
+
+    /** Test method for {@link Boxes#widestAxis(double[], int)}. */
+    @Test
+    void testWidestAxis() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: boxes longest along x, y and z: 0, 1, 2
+        assertEquals(0, Boxes.widestAxis(new double[] { 0, 0, 0, 3, 2, 1 }, 0), "TC01: x");
+        assertEquals(1, Boxes.widestAxis(new double[] { 0, 0, 0, 1, 3, 2 }, 0), "TC01: y");
+        assertEquals(2, Boxes.widestAxis(new double[] { 9, 9, 9, 9, 9, 9, 0, 0, 0, 1, 2, 3 }, 6), "TC01: z, at an offset");
+        // ===== Boundary Values Tests =====
+        // TC11: ties go to the first axis: a cube 0, y and z equal 1
+        assertEquals(0, Boxes.widestAxis(new double[] { 0, 0, 0, 1, 1, 1 }, 0), "TC11: a cube");
+        assertEquals(1, Boxes.widestAxis(new double[] { 0, 0, 0, 1, 2, 2 }, 0), "TC11: y and z equal");
+    }
 }
