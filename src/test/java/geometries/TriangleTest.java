@@ -23,6 +23,7 @@ import geometries.Intersectable.GeoPoint;
 import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
+import testutil.Bytecode;
 
 /**
  * Unit tests for {@link geometries.Triangle}: the course's open edges on its own queries, and
@@ -563,6 +564,9 @@ class TriangleTest {
         double t = Triangle.intersect(ray, data, 0, limit);
         ray.set(third, third, 5, 0, 0, -1, t);
         assertEquals(t, Triangle.intersect(ray, data, 0, limit), 0, "TC13: a hit at maxT counts");
+        // TC14: the kernel's bytecode within C2's limit for inlining hot methods (FreqInlineSize, 325)
+        int size = Bytecode.codeLength(Triangle.class, "intersect", "(Laccel/RayState;[DID)D");
+        assertTrue(size <= 325, "TC14: Triangle.intersect has " + size + " bytes of bytecode, too many to be inlined");
     }
 
     /**
