@@ -19,8 +19,6 @@ public class Triangle extends Polygon {
 
     /** The |determinant| of the intersection test below which a ray is taken as parallel to the triangle. */
     private final double parallelLimit;
-    /** The numbers of the renderer's test: p1 and the edges p2 − p1 and p3 − p1 (see {@link #intersect}). */
-    private final double[] testData;
 
     /**
      * Creates a triangle.
@@ -33,10 +31,7 @@ public class Triangle extends Polygon {
     public Triangle(Point3D p1, Point3D p2, Point3D p3) {
         super(p1, p2, p3);
         double[] v = vertexCoordinates;
-        testData = new double[] { v[0], v[1], v[2], v[3] - v[0], v[4] - v[1], v[5] - v[2], v[6] - v[0], v[7] - v[1],
-                v[8] - v[2] };
-        double[] d = testData;
-        parallelLimit = parallelLimit(d[3], d[4], d[5], d[6], d[7], d[8]);
+        parallelLimit = parallelLimit(v[3] - v[0], v[4] - v[1], v[5] - v[2], v[6] - v[0], v[7] - v[1], v[8] - v[2]);
     }
 
     /**
@@ -55,9 +50,34 @@ public class Triangle extends Polygon {
         return 1e-12 * Math.sqrt((e1x * e1x + e1y * e1y + e1z * e1z) * (e2x * e2x + e2y * e2y + e2z * e2z));
     }
 
+    /** The renderer's test ({@link #intersect}) on the triangle's data, written into the ray's scratch space. */
     @Override
     public double nearestHit(RayState ray) {
-        return intersect(ray, testData, 0, parallelLimit);
+        double[] data = ray.triangleScratch();
+        writeData(vertexCoordinates, 0, 3, 6, parallelLimit, data, 0);
+        return intersect(ray, data, 0, parallelLimit);
+    }
+
+    /**
+     * Writes a triangle's data, the numbers of {@link #intersect} and {@link #project}: its first
+     * vertex p1, its edges p2 − p1 and p3 − p1, and its parallel limit.
+     *
+     * @param vertices      the vertices' coordinates, three doubles each
+     * @param p1            where the first vertex's x lies in vertices
+     * @param p2            where the second vertex's x lies
+     * @param p3            where the third vertex's x lies
+     * @param parallelLimit the triangle's {@link #parallelLimit}
+     * @param target        the array
+     * @param offset        where the {@value TriangleMesh#TRIANGLE_DATA} numbers go
+     */
+    public static void writeData(double[] vertices, int p1, int p2, int p3, double parallelLimit, double[] target,
+                                 int offset) {
+        for (int k = 0; k < 3; ++k) {
+            target[offset + k] = vertices[p1 + k];
+            target[offset + 3 + k] = vertices[p2 + k] - vertices[p1 + k];
+            target[offset + 6 + k] = vertices[p3 + k] - vertices[p1 + k];
+        }
+        target[offset + 9] = parallelLimit;
     }
 
     /** The number of doubles {@link #project} writes. */

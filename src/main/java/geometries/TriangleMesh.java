@@ -495,15 +495,7 @@ public final class TriangleMesh extends Geometry {
      * @param offset where the {@value #TRIANGLE_DATA} numbers go
      */
     public void triangleData(int t, double[] target, int offset) {
-        int a = corner(t, 0);
-        int b = corner(t, 1);
-        int c = corner(t, 2);
-        for (int k = 0; k < 3; ++k) {
-            target[offset + k] = vertices[a + k];
-            target[offset + 3 + k] = vertices[b + k] - vertices[a + k];
-            target[offset + 6 + k] = vertices[c + k] - vertices[a + k];
-        }
-        target[offset + 9] = parallelLimits[t];
+        Triangle.writeData(vertices, corner(t, 0), corner(t, 1), corner(t, 2), parallelLimits[t], target, offset);
     }
 
     /** {@return the vertices' coordinates, x, y and z of each vertex in turn: a copy, so the mesh cannot change under its user} */
