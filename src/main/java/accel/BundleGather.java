@@ -253,7 +253,7 @@ final class BundleGather {
             return ray.attenuateBy(bodies.owner(b));
         double[] data = query.gatheredTriangles;
         int d = Query.GATHERED_TRIANGLE * i;
-        return Triangle.intersect(ray, data, d, data[d + 9]) == Geometry.NO_HIT
+        return Triangle.intersect(ray, data, d, data[d + TriangleMesh.PARALLEL_LIMIT]) == Geometry.NO_HIT
                 || ray.attenuate(data[d + TriangleMesh.TRIANGLE_DATA]);
     }
 }

@@ -375,8 +375,6 @@ final class BvhBuilder {
         }
     }
 
-
-
     /**
      * Grows a body's box by {@link #PADDING}, so that flat bodies are hit.
      *

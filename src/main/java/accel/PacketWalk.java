@@ -266,7 +266,7 @@ final class PacketWalk {
     private static int triangleOnPacket(Packet packet, TriangleMesh mesh, int part, double kT, int count) {
         double[] data = packet.triangle;
         mesh.triangleData(part, data, 0);
-        double limit = data[9];
+        double limit = data[TriangleMesh.PARALLEL_LIMIT];
         int[] list = packet.leafRays;
         RayState[] rays = packet.rays;
         int kept = 0;

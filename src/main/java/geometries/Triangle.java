@@ -77,7 +77,7 @@ public class Triangle extends Polygon {
             target[offset + 3 + k] = vertices[p2 + k] - vertices[p1 + k];
             target[offset + 6 + k] = vertices[p3 + k] - vertices[p1 + k];
         }
-        target[offset + 9] = parallelLimit;
+        target[offset + TriangleMesh.PARALLEL_LIMIT] = parallelLimit;
     }
 
     /** The number of doubles {@link #project} writes. */

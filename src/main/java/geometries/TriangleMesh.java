@@ -38,6 +38,8 @@ import static primitives.Util.requireNonNull;
 public final class TriangleMesh extends Geometry {
     /** The number of doubles of a triangle's data for {@link #triangleData}. */
     public static final int TRIANGLE_DATA = 10;
+    /** Where a triangle's parallel limit lies in its data, after p1 and the two edges. */
+    public static final int PARALLEL_LIMIT = 9;
     /** The tolerance, relative to a triangle's longest edge, of a point on it (see {@link #getNormal(Point3D)}). */
     private static final double ON_TRIANGLE_TOLERANCE = 1e-9;
 
@@ -441,7 +443,7 @@ public final class TriangleMesh extends Geometry {
     public double triangleHit(int t, RayState ray) {
         double[] data = ray.triangleScratch();
         triangleData(t, data, 0);
-        return Triangle.intersect(ray, data, 0, data[9]);
+        return Triangle.intersect(ray, data, 0, parallelLimits[t]);
     }
 
     /**
