@@ -38,10 +38,10 @@ import static primitives.Util.requireNonNull;
  * with the bundle's pyramid (a {@link ShadowFrustum}) and keeps the few bodies that may meet it, or
  * their smallest subtree when they are many ({@link BundleGather}); {@link #bundleRayTransmittance}
  * then tests a ray against those alone, and {@link #packetTransmittances} all the rays of the bundle
- * at once, walking a kept subtree as one packet ({@link PacketWalk}). A closed opaque mesh whose
- * core, its inner ball ({@link InnerBall}) or one of its inner boxes ({@link InnerBoxes}), lies across
- * every ray of a bundle blocks the whole bundle at the gather ({@link #blocksBundle}), and a packet's
- * ray through such a core is blocked before the walk ({@link ClosedMeshBlockers}).
+ * at once, walking a kept subtree as one packet ({@link PacketWalk}). A closed opaque mesh one of
+ * whose cores, its inner boxes ({@link InnerBoxes}), lies across every ray of a bundle blocks the
+ * whole bundle at the gather ({@link #blocksBundle}), and a packet's ray through such a core is
+ * blocked before the walk ({@link ClosedMeshBlockers}).
  * <p>
  * Queries take a {@link Query}, the caller's per-thread scratch space, and allocate nothing but
  * the {@link GeoPoint} a closest-hit query returns.
@@ -403,7 +403,7 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Whether the last {@link #gather} found a closed opaque mesh that blocks every ray of its bundle:
-     * every ray passes through the mesh's inner ball or one of its inner boxes on its way to a base
+     * every ray passes through one of the mesh's inner boxes on its way to a base
      * outside the mesh's box ({@link CoreCrossing}), so each crosses the mesh's surface, and each ray's
      * transparency is 0, as {@link #bundleRayTransmittance} (which then answers 0) would find one ray
      * at a time. A point in a body's umbra needs no ray traced. A brute-force {@link #scan} has no

@@ -11,9 +11,8 @@ import java.util.List;
 import primitives.Parallel;
 
 /**
- * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part whose core, its
- * inner ball ({@link InnerBall}) or one of its inner boxes ({@link InnerBoxes}), lies across every ray
- * of a bundle blocks the bundle at the gather ({@link CoreCrossing}), and a packet's ray through such
+ * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part one of whose
+ * cores, its inner boxes ({@link InnerBoxes}), lies across every ray of a bundle blocks the bundle at the gather ({@link CoreCrossing}), and a packet's ray through such
  * a core is blocked before the walk. A part closed by caps over its holes ({@link HoleCaps}) blocks so
  * only the bundles and rays that meet none of its caps' boxes.
  */
@@ -47,14 +46,13 @@ final class ClosedMeshBlockers {
     }
 
     /**
-     * A core of a blocker: its inner ball, or one of its inner boxes.
+     * A core of a blocker: one of its inner boxes.
      *
      * @param blocker the blocker's place in {@link #blockers}
-     * @param ball    the ball, or null for a box
-     * @param box     the box: the ball's, or the inner box, {minX, minY, minZ, maxX, maxY, maxZ}
-     * @param size    the ball's radius, or half the box's shortest side
+     * @param box     the inner box, {minX, minY, minZ, maxX, maxY, maxZ}
+     * @param size    half the box's shortest side
      */
-    private record Core(int blocker, InnerBall ball, double[] box, double size) {
+    private record Core(int blocker, double[] box, double size) {
     }
 
     /**
@@ -89,12 +87,9 @@ final class ClosedMeshBlockers {
         List<Core> all = new ArrayList<>();
         for (int s = 0; s < blockers.length; ++s) {
             ClosedParts.Part part = blockers[s].part;
-            if (part.ball() != null)
-                all.add(new Core(s, part.ball(), part.ball().box(), part.ball().radius));
             double[] inner = part.innerBoxes();
-            for (int b = 0; b < inner.length; b += 6) {
-                all.add(new Core(s, null, Arrays.copyOfRange(inner, b, b + 6), InnerBoxes.halfShortestSide(inner, b)));
-            }
+            for (int b = 0; b < inner.length; b += 6)
+                all.add(new Core(s, Arrays.copyOfRange(inner, b, b + 6), InnerBoxes.halfShortestSide(inner, b)));
         }
         return all.stream().filter(core -> core.size >= least).sorted(Comparator.comparingDouble(Core::size).reversed())
                 .limit(MAX_CORES).toArray(Core[]::new);
@@ -138,8 +133,7 @@ final class ClosedMeshBlockers {
             Core core = cores[c];
             if ((candidates & 1 << core.blocker) == 0 || !frustum.meetsBox(core.box, 0))
                 continue;
-            if ((core.ball != null ? CoreCrossing.sectionInside(frustum, core.ball)
-                    : CoreCrossing.crossesBox(frustum, core.box, 0)) && !meetsCaps(frustum, core)) {
+            if (CoreCrossing.crossesBox(frustum, core.box, 0) && !meetsCaps(frustum, core)) {
                 query.blocked = true;
                 return true;
             }
@@ -181,9 +175,7 @@ final class ClosedMeshBlockers {
             Core core = cores[query.coreList[k]];
             for (int r = 0; r < packet.size; ++r) {
                 RayState ray = packet.rays[r];
-                if (ray.ktr > 0 && (core.ball != null
-                        ? core.ball.crossedBy(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.maxT)
-                        : ray.boxEntry(core.box, 0, ray.maxT) != RayState.MISSED) && !meetsCaps(ray, core)) {
+                if (ray.ktr > 0 && ray.boxEntry(core.box, 0, ray.maxT) != RayState.MISSED && !meetsCaps(ray, core)) {
                     ray.ktr = 0;
                     ++blocked;
                 }

@@ -11,7 +11,7 @@ import geometries.TriangleMesh;
 import primitives.Point3D;
 
 /**
- * The closed parts of a triangle mesh, each with its inner ball: a mesh of several bodies (M's three
+ * The closed parts of a triangle mesh, each with its inner boxes: a mesh of several bodies (M's three
  * spheres as one mesh, a scan whose seams repeat their vertices) blocks whole bundles part by part.
  * <p>
  * Vertices with the same coordinates, to the bit, are welded into one: the renderer's triangle test
@@ -30,21 +30,20 @@ final class ClosedParts {
     private static final Map<TriangleMesh, List<Part>> FOUND = Collections.synchronizedMap(new WeakHashMap<>());
 
     /**
-     * A closed part of a mesh: its triangles, its cores (an inner ball, inner boxes) and the box
-     * around its triangles.
+     * A closed part of a mesh: its triangles, its cores (its inner boxes) and the box around its
+     * triangles.
      *
      * @param triangles  the part's triangles in the mesh, in order
-     * @param ball       the part's inner ball, or null when none was found
      * @param box        the box around the part's triangles, as {@link TriangleMesh#bounds(double[], int)} writes it
-     * @param innerBoxes the part's inner boxes ({@link InnerBoxes}), six numbers each, maybe none
+     * @param innerBoxes the part's inner boxes ({@link InnerBoxes}), six numbers each, at least one
      * @param capBoxes   the boxes of the caps over the part's holes ({@link HoleCaps}), six numbers
      *                   each, none for a part closed by itself: a ray that meets none of them and
      *                   passes through a core crosses the part's triangles
      */
-    record Part(int[] triangles, InnerBall ball, double[] box, double[] innerBoxes, double[] capBoxes) {
-        /** {@return the size of the part's largest core: its ball's radius, or half the shortest side of its largest box} */
+    record Part(int[] triangles, double[] box, double[] innerBoxes, double[] capBoxes) {
+        /** {@return the size of the part's largest core: half the shortest side of its largest inner box} */
         double coreSize() {
-            double size = ball == null ? 0 : ball.radius;
+            double size = 0;
             for (int b = 0; b < innerBoxes.length; b += 6)
                 size = Math.max(size, InnerBoxes.halfShortestSide(innerBoxes, b));
             return size;
@@ -56,7 +55,7 @@ final class ClosedParts {
     }
 
     /**
-     * The closed parts of a mesh that have a core (an inner ball or inner boxes), found on the first
+     * The closed parts of a mesh that have a core (an inner box), found on the first
      * call and kept.
      *
      * @param mesh the mesh
@@ -85,12 +84,11 @@ final class ClosedParts {
                     continue;
             }
             TriangleMesh part = subMesh(mesh, welded, triangles, caps);
-            InnerBall ball = InnerBall.ofClosed(part);
             double[] innerBoxes = InnerBoxes.of(part);
-            if (ball != null || innerBoxes.length > 0) {
+            if (innerBoxes.length > 0) {
                 double[] box = new double[6];
                 part.bounds(box, 0);
-                parts.add(new Part(triangles, ball, box, innerBoxes, caps == null ? new double[0] : caps.boxes));
+                parts.add(new Part(triangles, box, innerBoxes, caps == null ? new double[0] : caps.boxes));
             }
         }
         return List.copyOf(parts);

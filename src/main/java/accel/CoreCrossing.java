@@ -1,8 +1,8 @@
 package accel;
 
 /**
- * Whether every ray of a shadow bundle passes through the core of a closed mesh: its inner ball
- * ({@link InnerBall}) or one of its inner boxes ({@link InnerBoxes}), on its way to a base outside the
+ * Whether every ray of a shadow bundle passes through a core of a closed mesh, one of its inner
+ * boxes ({@link InnerBoxes}), on its way to a base outside the
  * mesh's box. Each such ray passes through the inside of the mesh and ends outside it, so it crosses
  * the mesh's surface: an opaque closed mesh blocks the whole bundle, and no ray of it is traced. The
  * tests are conservative, as the pyramid's own ({@link ShadowFrustum}): a core counts only when the
@@ -83,38 +83,5 @@ final class CoreCrossing {
                 return true;
         }
         return false;
-    }
-
-    /**
-     * Whether every ray of the bundle passes through the inside of a closed mesh's inner ball: the
-     * pyramid's cross-section through the ball (across the line from the apex to the base's centre, at
-     * a fraction λ of the way, 0 &lt; λ &lt; 1) lies inside the ball by more than the thickness and
-     * margin. Every ray's point at that fraction of its own way lies within the thickness of the
-     * section, and the section is the hull of its four corners. The base must lie outside the mesh's
-     * box too ({@link #baseOutside}): the caller's test.
-     *
-     * @param frustum the bundle's pyramid
-     * @param ball    the inner ball of a closed mesh
-     * @return true when every ray passes through the ball; false when that is not sure (always after a
-     *         refused {@link ShadowFrustum#set})
-     */
-    static boolean sectionInside(ShadowFrustum frustum, InnerBall ball) {
-        double[] v = frustum.vertices();
-        double wx = (v[3] + v[6] + v[9] + v[12]) / 4 - v[0];
-        double wy = (v[4] + v[7] + v[10] + v[13]) / 4 - v[1];
-        double wz = (v[5] + v[8] + v[11] + v[14]) / 4 - v[2];
-        double lambda = ((ball.cx - v[0]) * wx + (ball.cy - v[1]) * wy + (ball.cz - v[2]) * wz)
-                / (wx * wx + wy * wy + wz * wz);
-        double reach = ball.radius - frustum.margin();
-        if (!(frustum.isSet() && lambda > 0 && lambda < 1 && reach > 0))
-            return false;
-        for (int i = 3; i < 15; i += 3) {
-            double x = v[0] + lambda * (v[i] - v[0]) - ball.cx;
-            double y = v[1] + lambda * (v[i + 1] - v[1]) - ball.cy;
-            double z = v[2] + lambda * (v[i + 2] - v[2]) - ball.cz;
-            if (!(x * x + y * y + z * z < reach * reach))
-                return false;
-        }
-        return true;
     }
 }

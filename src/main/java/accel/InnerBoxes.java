@@ -9,7 +9,7 @@ import java.util.Arrays;
  * found on a grid of cubic cells over the mesh's box (64 per triangle, 4,096 to 110,592 of them). A cell that no triangle's box reaches lies wholly inside or wholly outside
  * the mesh, and so does every cell it reaches through such cells, face to face; a group of them that
  * does not reach the grid's border is inside when the parity rays from one of its cells say so
- * surely ({@link InnerBall#parity}). The largest boxes of inside cells, grown greedily from the
+ * surely ({@link InsideParity}). The largest boxes of inside cells, grown greedily from the
  * cells deepest inside, are the mesh's inner boxes.
  * <p>
  * A ray through an inner box passes through the inside of the closed mesh, so on its way to a point
@@ -160,7 +160,7 @@ final class InnerBoxes {
             int i = c % n[0];
             int j = c / n[0] % n[1];
             int k = c / (n[0] * n[1]);
-            int verdict = InnerBall.parity(mesh, origin[0] + (i + 0.5) * cell, origin[1] + (j + 0.5) * cell,
+            int verdict = InsideParity.parity(mesh, origin[0] + (i + 0.5) * cell, origin[1] + (j + 0.5) * cell,
                     origin[2] + (k + 0.5) * cell);
             if (verdict >= 0)
                 return verdict == 1;

@@ -7,7 +7,7 @@
  * shadow ray's, which stops at its first opaque blocker). A soft shadow's rays share a pyramid from the
  * shaded point to the light's square, a {@link accel.ShadowFrustum}: the hierarchy gathers the few
  * bodies that may meet it, then traces the rays against those alone, or walks a subtree with the rays
- * as one packet; a closed opaque mesh whose {@link accel.InnerBall} lies across the whole pyramid
- * blocks the bundle without a ray traced. {@code docs/acceleration.md} explains the design.
+ * as one packet; a closed opaque mesh one of whose {@link accel.InnerBoxes} lies across the whole
+ * pyramid blocks the bundle without a ray traced. {@code docs/acceleration.md} explains the design.
  */
 package accel;

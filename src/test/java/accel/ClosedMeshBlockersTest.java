@@ -38,7 +38,7 @@ import primitives.Vector;
 
 /**
  * Unit tests for {@link ClosedMeshBlockers}, through {@link BoundingVolumeHierarchy#blocksBundle}: a bundle
- * is said blocked only when every one of its rays is, and packet rays through a closed mesh's ball.
+ * is said blocked only when every one of its rays is, and packet rays through a closed mesh's core.
  */
 class ClosedMeshBlockersTest {
 
@@ -113,8 +113,8 @@ class ClosedMeshBlockersTest {
         private int blockedOnMesh;
         /** bundles that gathered something and were not blocked. */
         private int unblocked;
-        /** rays of unblocked bundles traced as a packet that pass through an opaque closed mesh's ball. */
-        private int ballRays;
+        /** rays of unblocked bundles traced as a packet that pass through an opaque closed mesh's core. */
+        private int coreRays;
         /** rays traced, and of them those the scan found darkened. */
         private int rays;
         private int darkened;
@@ -206,28 +206,37 @@ class ClosedMeshBlockersTest {
                     ++counts.darkened;
                 packet.add(new Ray(new Point3D(ray[0], ray[1], ray[2]), new Vector(ray[3], ray[4], ray[5])));
                 distances.add(ray[6]);
-                if (!blocked && query.isSubtreeGathered() && throughBall(scene.closed(), ray))
-                    ++counts.ballRays;
+                if (!blocked && query.isSubtreeGathered() && throughCore(scene.closed(), ray))
+                    ++counts.coreRays;
             }
             if (!blocked)
                 assertPacket(bvh, query, scan, scanQuery, packet, distances, 0, () -> bundleLabel);
         }
     }
 
+    /** {@return the place of mesh m of TC11's 5 × 4 grid, at a height} */
+    private static Point3D gridPlace(int m, double height) {
+        return new Point3D(10 * (m % 5) - 20, 10 * (m / 5) - 15, height);
+    }
+
     /**
-     * Whether a ray passes through the inner ball of one of some meshes that are opaque.
+     * Whether a ray passes through an inner box of a closed part, closed without caps, of one of some
+     * meshes that are opaque.
      *
      * @param meshes the meshes
      * @param ray    {ox, oy, oz, dx, dy, dz, distance}
      * @return true when it does
      */
-    private static boolean throughBall(List<TriangleMesh> meshes, double[] ray) {
-        for (TriangleMesh mesh : meshes) {
-            InnerBall ball = InnerBall.of(mesh);
-            if (ball != null && mesh.getMaterial().getKt() == 0
-                    && ball.crossedBy(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]))
-                return true;
-        }
+    private static boolean throughCore(List<TriangleMesh> meshes, double[] ray) {
+        RayState state = new RayState().set(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]).invert();
+        for (TriangleMesh mesh : meshes)
+            for (ClosedParts.Part part : ClosedParts.of(mesh)) {
+                double[] inner = part.innerBoxes();
+                for (int b = 0; b < inner.length; b += 6)
+                    if (mesh.getMaterial().getKt() == 0 && part.capBoxes().length == 0
+                            && state.boxEntry(inner, b, ray[6]) != RayState.MISSED)
+                        return true;
+            }
         return false;
     }
 
@@ -249,11 +258,11 @@ class ClosedMeshBlockersTest {
         SolidCounts opaque = new SolidCounts();
         for (int s = 0; s < 4; ++s)
             checkSolidBundles(rnd, SolidScene.random(rnd, 3, 0), 120, opaque, "TC01: scene " + s);
-        // both answers are common, many blocked bundles leave a mesh, many packet rays pass through a ball
+        // both answers are common, many blocked bundles leave a mesh, many packet rays pass through a core
         assertTrue(opaque.blocked >= 60 && opaque.unblocked >= 150, "TC01: too few blocked (" + opaque.blocked
                 + ") or unblocked (" + opaque.unblocked + ") bundles");
         assertTrue(opaque.blockedOnMesh >= 20, "TC01: too few blocked bundles leaving a mesh: " + opaque.blockedOnMesh);
-        assertTrue(opaque.ballRays >= 200, "TC01: too few packet rays through a ball: " + opaque.ballRays);
+        assertTrue(opaque.coreRays >= 200, "TC01: too few packet rays through a core: " + opaque.coreRays);
         assertTrue(opaque.darkened >= 3000 && opaque.rays - opaque.darkened >= 3000, "TC01: too few darkened ("
                 + opaque.darkened + ") or open (" + (opaque.rays - opaque.darkened) + ") rays of " + opaque.rays);
         // TC02: the same with every closed mesh of kT 0.5: no bundle is blocked, the rays through the
@@ -274,7 +283,7 @@ class ClosedMeshBlockersTest {
         SolidCounts enclosed = new SolidCounts();
         checkSolidBundles(rnd, new SolidScene(inside.geometries(), closed, inside.open(), inside.spheres()), 120,
                 enclosed, "TC03");
-        assertNotNull(InnerBall.of(enclosing), "TC03: the enclosing mesh has an inner ball");
+        assertFalse(ClosedParts.of(enclosing).isEmpty(), "TC03: the enclosing mesh has a core");
         assertEquals(0, enclosed.blocked, "TC03: a mesh around the light must block no bundle");
         assertTrue(enclosed.unblocked >= 50, "TC03: too few bundles gathered something: " + enclosed.unblocked);
 
@@ -334,13 +343,13 @@ class ClosedMeshBlockersTest {
         }
 
         // ===== Boundary Values Tests =====
-        // TC11: 17 opaque closed sphere meshes of radii 1, 1.1, …, 2.6 in a row along x (6 apart, at
-        // height 4), a narrow bundle (half-side 0.5) from the floor right under each to a square right
-        // over it: only the 16 largest balls are tried, so every bundle but the smallest mesh's is
-        // blocked; every ray is blocked by the scan, one by one, and the scan blocks no bundle
+        // TC11: 17 opaque closed sphere meshes of radii 3, 3.1, …, 4.6 on a 5 × 4 grid (10 apart, at
+        // height 6), a narrow bundle (half-side 0.5) from the floor right under each to a square right
+        // over it: only the 16 closed meshes of the largest cores are tried, so every bundle but the
+        // smallest mesh's is blocked; every ray is blocked by the scan, one by one, and the scan blocks no bundle
         Geometries row = new Geometries(new Plane(Point3D.ZERO, FLOOR_NORMAL));
         for (int m = 0; m < 17; ++m)
-            row.add(SphereMesh.mesh(new Point3D(6 * m - 48, 0, 4), 1 + 0.1 * m, 8, 16));
+            row.add(SphereMesh.mesh(gridPlace(m, 6), 3 + 0.1 * m, 8, 16));
         BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(row);
         BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(row);
         Query query = bvh.newQuery();
@@ -349,12 +358,12 @@ class ClosedMeshBlockersTest {
         Vector a = new Vector(0.5, 0, 0);
         Vector b = new Vector(0, 0.5, 0);
         for (int m = 0; m < 17; ++m) {
-            Point3D p = new Point3D(6 * m - 48, 0, 0);
-            Point3D c = new Point3D(6 * m - 48, 0, 30);
+            Point3D p = gridPlace(m, 0);
+            Point3D c = gridPlace(m, 30);
             int[] gathered = gatherLeaving(bvh, query, p, n, c, a, b, false);
             assertEquals(1, gathered[1], "TC11: the bundle under mesh " + m + " must gather it");
             assertEquals(m > 0, bvh.blocksBundle(query), "TC11: the bundle under mesh " + m
-                    + (m > 0 ? " must be blocked" : " must not be blocked: its ball is the 17th largest"));
+                    + (m > 0 ? " must be blocked" : " must not be blocked: its core is the 17th largest"));
             gatherLeaving(scan, scanQuery, p, n, c, a, b, false);
             assertFalse(scan.blocksBundle(scanQuery), "TC11: the scan must block no bundle (mesh " + m + ")");
             for (double[] ray : shadowRays(rnd, p, n, c, a, b, 10))

@@ -1,5 +1,6 @@
 package accel;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -75,18 +76,16 @@ class ClosedPartsTest {
     @Test
     void testOf() {
         // ===== Equivalence Partitions Tests =====
-        // TC01: a sphere's mesh: one part, whose ball is InnerBall.of's and whose box is the mesh's
+        // TC01: a sphere's mesh: one part, whose inner boxes are InnerBoxes.of's and whose box is the mesh's
         TriangleMesh sphere = SphereMesh.mesh(new Point3D(1, 2, 3), 4, 8, 12);
         List<ClosedParts.Part> parts = ClosedParts.of(sphere);
-        InnerBall expected = InnerBall.of(sphere);
         assertEquals(1, parts.size(), "TC01: a sphere's mesh is one closed part");
-        assertEquals(expected.radius, parts.get(0).ball().radius, DELTA, "TC01: InnerBall.of's radius");
-        assertEquals(expected.cx, parts.get(0).ball().cx, DELTA, "TC01: InnerBall.of's centre (x)");
+        assertArrayEquals(InnerBoxes.of(sphere), parts.get(0).innerBoxes(), "TC01: InnerBoxes.of's boxes");
         double[] box = new double[6];
         sphere.bounds(box, 0);
         for (int k = 0; k < 6; ++k)
             assertEquals(box[k], parts.get(0).box()[k], 0, "TC01: the part's box is the mesh's, number " + k);
-        // TC02: three spheres as one mesh: three parts, each ball inside its own sphere
+        // TC02: three spheres as one mesh: three parts, each core inside its own sphere
         Point3D[] centres = { new Point3D(-30, 0, 0), new Point3D(0, 0, 0), new Point3D(30, 0, 0) };
         double[] radii = { 5, 10, 7 };
         TriangleMesh[] spheres = new TriangleMesh[3];
@@ -95,19 +94,23 @@ class ClosedPartsTest {
         List<ClosedParts.Part> three = ClosedParts.of(TestMeshes.merge(spheres));
         assertEquals(3, three.size(), "TC02: three closed parts");
         for (ClosedParts.Part part : three) {
-            InnerBall ball = part.ball();
+            double[] inner = part.innerBoxes();
             boolean inOne = false;
-            for (int s = 0; s < 3; ++s)
-                inOne |= new Point3D(ball.cx, ball.cy, ball.cz).distance(centres[s]) + ball.radius < radii[s];
-            assertTrue(inOne, "TC02: each ball lies inside one of the spheres");
+            for (int s = 0; s < 3; ++s) {
+                boolean all = true;
+                for (int b = 0; b < inner.length; b += 6)
+                    all &= new Point3D(inner[b], inner[b + 1], inner[b + 2]).distance(centres[s]) < radii[s]
+                            && new Point3D(inner[b + 3], inner[b + 4], inner[b + 5]).distance(centres[s]) < radii[s];
+                inOne |= all;
+            }
+            assertTrue(inOne, "TC02: each part's inner boxes lie inside one of the spheres");
         }
         // TC03: an open mesh (one square): no part
         TriangleMesh square = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 },
                 new int[] { 0, 1, 2, 0, 2, 3 });
         assertTrue(ClosedParts.of(square).isEmpty(), "TC03: an open mesh has no closed part");
-        // TC04: a cube whose faces repeat their vertices: closed once welded (InnerBall.of alone finds none)
+        // TC04: a cube whose faces repeat their vertices: closed once welded
         TriangleMesh seams = cubeOfSeparateFaces(0);
-        assertNull(InnerBall.of(seams), "TC04: by index the mesh is open");
         assertEquals(1, ClosedParts.of(seams).size(), "TC04: welded, the cube is one closed part");
 
         // TC05: a bowl (a sphere's mesh of 24 rings without its top fan): one part, closed by a cap over its
@@ -128,17 +131,15 @@ class ClosedPartsTest {
         TriangleMesh mixed = TestMeshes.merge(TestMeshes.cube(5, 5, 5, 1), square);
         List<ClosedParts.Part> cubeOnly = ClosedParts.of(mixed);
         assertEquals(1, cubeOnly.size(), "TC12: only the cube is closed");
-        assertEquals(5.5, cubeOnly.get(0).ball().cx, 0.01, "TC12: the ball is the cube's");
+        assertEquals(5, cubeOnly.get(0).box()[0], 1e-6, "TC12: the part is the cube");
         // TC13: two cubes with faces of their own, apart in one mesh: two parts
         assertEquals(2, ClosedParts.of(TestMeshes.merge(cubeOfSeparateFaces(0), cubeOfSeparateFaces(3))).size(),
                 "TC13: two welded cubes are two parts");
-        // TC14: two cubes sharing a corner: one part by the weld, closed, but both its candidate centres
-        // are the shared corner, on its surface: no ball; it is kept for its inner boxes, each inside
+        // TC14: two cubes sharing a corner: one part by the weld, closed, with inner boxes, each inside
         // one of the cubes [0, 1]³ and [1, 2]³
         TriangleMesh touching = TestMeshes.merge(TestMeshes.cube(0, 0, 0, 1), TestMeshes.cube(1, 1, 1, 1));
         List<ClosedParts.Part> corner = ClosedParts.of(touching);
         assertEquals(1, corner.size(), "TC14: cubes sharing a corner are one part");
-        assertNull(corner.get(0).ball(), "TC14: cubes sharing a corner have no ball");
         double[] inner = corner.get(0).innerBoxes();
         assertTrue(inner.length > 0, "TC14: the cubes have inner boxes");
         for (int b = 0; b < inner.length; b += 6) {

@@ -45,7 +45,7 @@ class InnerBoxesTest {
                 double[] p = new double[3];
                 for (int k = 0; k < 3; ++k)
                     p[k] = boxes[b + k] + rnd.nextDouble() * (boxes[b + 3 + k] - boxes[b + k]);
-                int parity = InnerBall.parity(mesh, p[0], p[1], p[2]);
+                int parity = InsideParity.parity(mesh, p[0], p[1], p[2]);
                 assertTrue(parity != 0, label + ": its point " + Arrays.toString(p) + " must not be outside");
             }
         }
