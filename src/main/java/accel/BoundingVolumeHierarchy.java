@@ -403,8 +403,8 @@ public final class BoundingVolumeHierarchy {
 
     /**
      * Whether the last {@link #gather} found a closed opaque mesh that blocks every ray of its bundle:
-     * every ray passes through one of the mesh's inner boxes on its way to a base
-     * outside the mesh's box ({@link CoreCrossing}), so each crosses the mesh's surface, and each ray's
+     * every ray passes through one of the mesh's inner boxes on its way to a base outside the mesh's
+     * box ({@link CoreCrossing}), so each crosses the mesh's surface, and each ray's
      * transparency is 0, as {@link #bundleRayTransmittance} (which then answers 0) would find one ray
      * at a time. A point in a body's umbra needs no ray traced. A brute-force {@link #scan} has no
      * such meshes.

@@ -12,8 +12,8 @@ import primitives.Parallel;
 
 /**
  * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part one of whose
- * cores, its inner boxes ({@link InnerBoxes}), lies across every ray of a bundle blocks the bundle at the gather ({@link CoreCrossing}), and a packet's ray through such
- * a core is blocked before the walk. A part closed by caps over its holes ({@link HoleCaps}) blocks so
+ * cores, its inner boxes ({@link InnerBoxes}), lies across every ray of a bundle blocks the bundle at
+ * the gather ({@link CoreCrossing}), and a packet's ray through such a core is blocked before the walk. A part closed by caps over its holes ({@link HoleCaps}) blocks so
  * only the bundles and rays that meet none of its caps' boxes.
  */
 final class ClosedMeshBlockers {

@@ -55,8 +55,7 @@ final class ClosedParts {
     }
 
     /**
-     * The closed parts of a mesh that have a core (an inner box), found on the first
-     * call and kept.
+     * The closed parts of a mesh that have a core (an inner box), found on the first call and kept.
      *
      * @param mesh the mesh
      * @return its parts (none for a mesh without a closed part), not to be changed

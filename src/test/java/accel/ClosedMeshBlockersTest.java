@@ -244,7 +244,7 @@ class ClosedMeshBlockersTest {
      * Test method for {@link BoundingVolumeHierarchy#blocksBundle} and
      * {@link BoundingVolumeHierarchy#gatheredTransmittances}: a bundle is said blocked only when the
      * brute-force scan blocks every one of its rays, and in a packet a ray through a closed opaque
-     * mesh's ball gets exactly the scan's answer.
+     * mesh's core gets exactly the scan's answer.
      */
     @Test
     void testTryOn() {
@@ -266,14 +266,14 @@ class ClosedMeshBlockersTest {
         assertTrue(opaque.darkened >= 3000 && opaque.rays - opaque.darkened >= 3000, "TC01: too few darkened ("
                 + opaque.darkened + ") or open (" + (opaque.rays - opaque.darkened) + ") rays of " + opaque.rays);
         // TC02: the same with every closed mesh of kT 0.5: no bundle is blocked, the rays through the
-        // balls get the scan's answers (products of 0.5, exact in any order)
+        // cores get the scan's answers (products of 0.5, exact in any order)
         SolidCounts transparent = new SolidCounts();
         for (int s = 0; s < 2; ++s)
             checkSolidBundles(rnd, SolidScene.random(rnd, 3, 0.5), 120, transparent, "TC02: scene " + s);
         assertEquals(0, transparent.blocked, "TC02: transparent meshes must block no bundle");
         assertTrue(transparent.unblocked >= 100, "TC02: too few bundles gathered something: " + transparent.unblocked);
         // TC03: a scene of TC02 inside an opaque closed sphere mesh (radius 60 around (0, 0, 10)) whose box
-        // holds the light: its ball lies across every bundle, but no bundle is blocked and every ray gets
+        // holds the light: its cores lie across the bundles, but no bundle is blocked and every ray gets
         // the scan's answer
         SolidScene inside = SolidScene.random(rnd, 3, 0.5);
         TriangleMesh enclosing = SphereMesh.mesh(new Point3D(0, 0, 10), 60, 8, 16);
@@ -287,9 +287,9 @@ class ClosedMeshBlockersTest {
         assertEquals(0, enclosed.blocked, "TC03: a mesh around the light must block no bundle");
         assertTrue(enclosed.unblocked >= 50, "TC03: too few bundles gathered something: " + enclosed.unblocked);
 
-        // TC04: an opaque closed bar [−20, 20] × [−1.5, 1.5] × [3, 6] over the floor, its ball at its middle
-        // x = 0: narrow bundles (half-side 0.5) from the floor under it at x = 12 and x = −15 to squares over
-        // them miss the ball but pass through an inner box: blocked, and every ray is blocked by the scan;
+        // TC04: an opaque closed bar [−20, 20] × [−1.5, 1.5] × [3, 6] over the floor: narrow bundles
+        // (half-side 0.5) from the floor under it at x = 12 and x = −15 to squares over them pass through
+        // an inner box: blocked, and every ray is blocked by the scan;
         // one from x = 25, beside the bar: not blocked
         Geometries bar = new Geometries(new Plane(Point3D.ZERO, FLOOR_NORMAL), cuboid(-20, -1.5, 3, 20, 1.5, 6));
         BoundingVolumeHierarchy barTree = BoundingVolumeHierarchy.build(bar);

@@ -1305,8 +1305,8 @@ class RayTracerBasicTest {
     // Blocked bundles: three opaque closed sphere meshes (one TriangleMesh each, 224 triangles) high over
     // the floor, lit by a square light of edge 12 at the bundle scenes' light's place (height 100), seen
     // by the bundle pictures' camera. Each mesh's umbra lies off its own footprint, in sight: there
-    // every ray of a bundle passes through the mesh's inner ball (its cross-section about 2 to 3 from
-    // the axis where the ball's radius is 5.4 to 7.3), and the bundle is blocked without a ray traced.
+    // every ray of a bundle passes through one of the mesh's inner boxes, and the bundle is blocked
+    // without a ray traced.
     // ---------------------------------------------------------------------------------------------
 
     private static final int SOLID_PICTURE_SIZE = 64;
@@ -1450,7 +1450,7 @@ class RayTracerBasicTest {
 
     /**
      * The terminator scene: a floor, then the mesh sphere, as {@link Triangle} objects or as one closed
-     * {@link TriangleMesh} (whose inner ball then blocks rays).
+     * {@link TriangleMesh} (whose inner boxes then block rays).
      *
      * @param asMesh whether the sphere is one {@link TriangleMesh}
      * @return the scene
@@ -1553,9 +1553,9 @@ class RayTracerBasicTest {
     /**
      * Test method for {@link RayTracerBasic#calcSoftShadows}: thick shadow bundles leaving a closed
      * {@link TriangleMesh} change no picture — the terminator scene with its sphere as one mesh (whose
-     * inner ball blocks the rays of a packet that enter the mesh, untested) renders, with adaptive
+     * inner boxes block the rays of a packet that enter them, untested) renders, with adaptive
      * sampling off and on, as through a brute-force scan of every body, and as the same triangles given
-     * as {@link Triangle} objects (which have no inner ball).
+     * as {@link Triangle} objects.
      */
     @Test
     void testThickBundlesOnClosedMeshKeepPictures() {
@@ -1566,8 +1566,8 @@ class RayTracerBasicTest {
         ImageWriter mesh = assertTerminatorKept(true, "terminator-mesh", false, "TC01");
         assertTerminatorKept(true, "terminator-mesh", true, "TC02 (adaptive sampling)");
         // ===== Boundary Values Tests =====
-        // TC11: rendered with bundles, the mesh's picture is that of the Triangle objects (which have no
-        // inner ball): at most 0.1 % of the pixels differ, by at most 2 levels
+        // TC11: rendered with bundles, the mesh's picture is that of the Triangle objects: at most 0.1 % of
+        // the pixels differ, by at most 2 levels
         assertSamePicture(mesh, renderBundleScene(terminatorScene(false), terminatorCamera(), "terminator",
                 TERMINATOR_PICTURE_SIZE, false, false), "TC11");
     }
