@@ -12,9 +12,10 @@ import primitives.Parallel;
 
 /**
  * The closed parts of the tree's opaque meshes as blockers of whole bundles: a part one of whose
- * cores, its inner boxes ({@link InnerBoxes}), lies across every ray of a bundle blocks the bundle at
- * the gather ({@link CoreCrossing}), and a packet's ray through such a core is blocked before the walk. A part closed by caps over its holes ({@link HoleCaps}) blocks so
- * only the bundles and rays that meet none of its caps' boxes.
+ * cores, its inner boxes ({@link InnerBoxes}), lies across every ray of a bundle blocks the bundle
+ * at the gather ({@link CoreCrossing}), and a packet's ray through such a core is blocked before
+ * the walk. A part closed by caps over its holes ({@link HoleCaps}) blocks so only the bundles and
+ * rays that meet none of its caps' boxes.
  */
 final class ClosedMeshBlockers {
     /** The most closed meshes whose cores the gather tries: those of the largest cores. */

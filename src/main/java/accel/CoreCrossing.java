@@ -2,10 +2,11 @@ package accel;
 
 /**
  * Whether every ray of a shadow bundle passes through a core of a closed mesh, one of its inner
- * boxes ({@link InnerBoxes}), on its way to a base outside the mesh's box. Each such ray passes through the inside of the mesh and ends outside it, so it crosses
- * the mesh's surface: an opaque closed mesh blocks the whole bundle, and no ray of it is traced. The
- * tests are conservative, as the pyramid's own ({@link ShadowFrustum}): a core counts only when the
- * rays pass inside it by more than the pyramid's thickness and margin.
+ * boxes ({@link InnerBoxes}), on its way to a base outside the mesh's box. Each such ray passes
+ * through the inside of the mesh and ends outside it, so it crosses the mesh's surface: an opaque
+ * closed mesh blocks the whole bundle, and no ray of it is traced. The tests are conservative, as
+ * the pyramid's own ({@link ShadowFrustum}): a core counts only when the rays pass inside it by
+ * more than the pyramid's thickness and margin.
  */
 final class CoreCrossing {
     /** Not instantiable. */

@@ -6,11 +6,12 @@ import java.util.Arrays;
 
 /**
  * Boxes inside a closed mesh that touch none of its triangles: the convex cores of an occluder,
- * found on a grid of cubic cells over the mesh's box (64 per triangle, 4,096 to 110,592 of them). A cell that no triangle's box reaches lies wholly inside or wholly outside
- * the mesh, and so does every cell it reaches through such cells, face to face; a group of them that
- * does not reach the grid's border is inside when the parity rays from one of its cells say so
- * surely ({@link InsideParity}). The largest boxes of inside cells, grown greedily from the
- * cells deepest inside, are the mesh's inner boxes.
+ * found on a grid of cubic cells over the mesh's box (64 per triangle, 4,096 to 110,592 of them). A
+ * cell that no triangle's box reaches lies wholly inside or wholly outside the mesh, and so does
+ * every cell it reaches through such cells, face to face; a group of them that does not reach the
+ * grid's border is inside when the parity rays from one of its cells say so surely
+ * ({@link InsideParity}). The largest boxes of inside cells, grown greedily from the cells deepest
+ * inside, are the mesh's inner boxes.
  * <p>
  * A ray through an inner box passes through the inside of the closed mesh, so on its way to a point
  * outside the mesh's box it crosses the surface: an opaque mesh blocks it. And since the rays from one

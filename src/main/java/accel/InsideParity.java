@@ -39,10 +39,11 @@ final class InsideParity {
      */
     static int parity(TriangleMesh mesh, double x, double y, double z) {
         double[] data = new double[TriangleMesh.TRIANGLE_DATA];
+        double[] foot = new double[Triangle.PROJECTION];
         double[] centre = { x, y, z };
         int parity = UNSURE;
         for (double[] d : PARITY_DIRECTIONS) {
-            int crossings = crossings(mesh, data, centre, d);
+            int crossings = crossings(mesh, data, foot, centre, d);
             if (crossings == UNSURE || (parity != UNSURE && crossings % 2 != parity))
                 return UNSURE;
             parity = crossings % 2;
@@ -54,11 +55,11 @@ final class InsideParity {
      * Counts the triangles a ray from a centre crosses, with exact barycentric bounds.
      *
      * @param data scratch space for a triangle's data
+     * @param foot scratch space for a point's projection onto a triangle ({@link Triangle#project})
      * @param d    the ray's unit direction
      * @return the count, or {@link #UNSURE} when the ray passes near an edge or along a triangle
      */
-    private static int crossings(TriangleMesh mesh, double[] data, double[] centre, double[] d) {
-        double[] foot = new double[Triangle.PROJECTION];
+    private static int crossings(TriangleMesh mesh, double[] data, double[] foot, double[] centre, double[] d) {
         int count = 0;
         for (int t = 0; t < mesh.getTrianglesCount(); ++t) {
             mesh.triangleData(t, data, 0);

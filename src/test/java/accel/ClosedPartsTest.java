@@ -2,11 +2,20 @@ package accel;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestMeshes.cube;
+import static testutil.TestMeshes.cubeFaces;
+import static testutil.TestMeshes.merge;
+import static testutil.TestMeshes.tetrahedron;
+import static testutil.TestMeshes.tetrahedronFaces;
+import static testutil.TestMeshes.tetrahedronVertices;
 
+import java.util.Arrays;
 import java.util.List;
+import java.util.stream.IntStream;
 
 import org.junit.jupiter.api.Test;
 
@@ -15,7 +24,7 @@ import geometries.TriangleMesh;
 import primitives.Point3D;
 import testutil.TestMeshes;
 
-/** Unit tests for {@link ClosedParts}: welded vertices, connected parts, closed parts and their balls. */
+/** Unit tests for {@link ClosedParts}: welded vertices, closed meshes, connected parts and their inner boxes. */
 class ClosedPartsTest {
     private static final double DELTA = 1e-9;
 
@@ -43,7 +52,32 @@ class ClosedPartsTest {
 
     /** {@return the number of distinct welded vertices} */
     private static long distinct(int[] welded) {
-        return java.util.Arrays.stream(welded).distinct().count();
+        return Arrays.stream(welded).distinct().count();
+    }
+
+    /** {@return whether a mesh is closed by vertex index: every edge used by an even number of its triangles} */
+    private static boolean isClosed(TriangleMesh mesh) {
+        return ClosedParts.isClosed(IntStream.range(0, mesh.getVerticesCount()).toArray(), mesh.indices(),
+                IntStream.range(0, mesh.getTrianglesCount()).toArray());
+    }
+
+    /** {@return the unit cube whose x-max face's triangles use vertex 8, a copy of vertex 7} */
+    private static TriangleMesh cubeWithCopiedVertex() {
+        double[] vertices = Arrays.copyOf(cube(0, 0, 0, 1).coordinates(), 27);
+        Arrays.fill(vertices, 24, 27, 1); // vertex 7's corner (1, 1, 1) again
+        int[] faces = cubeFaces();
+        for (int i = faces.length - 6; i < faces.length; ++i)
+            if (faces[i] == 7)
+                faces[i] = 8;
+        return new TriangleMesh(vertices, faces);
+    }
+
+    /** {@return two arrays one after the other} */
+    private static int[] concat(int[] first, int[] second) {
+        int[] both = new int[first.length + second.length];
+        System.arraycopy(first, 0, both, 0, first.length);
+        System.arraycopy(second, 0, both, first.length, second.length);
+        return both;
     }
 
     /** Test method for {@link ClosedParts#weld(TriangleMesh)}. */
@@ -70,6 +104,43 @@ class ClosedPartsTest {
         TriangleMesh ulp = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, Math.ulp(0.0), 0, 0 },
                 new int[] { 0, 1, 2, 3, 1, 2 });
         assertEquals(3, ClosedParts.weld(ulp)[3], "TC12: a vertex one ulp away is not welded");
+    }
+
+    /** Test method for {@link ClosedParts#isClosed(int[], int[], int[])}, each vertex standing for itself. */
+    @Test
+    void testIsClosed() {
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a sphere's mesh (shared poles) and a cube: closed
+        assertTrue(isClosed(benchmark.SphereMesh.mesh(Point3D.ZERO, 5, 8, 12)), "TC01: a sphere is closed");
+        assertTrue(isClosed(cube(0, 0, 0, 1)), "TC01: a cube is closed");
+        // TC02: a terrain (an open sheet): not closed
+        assertFalse(isClosed(benchmark.Terrain.mesh(200)), "TC02: a terrain is open");
+        // TC03: a tetrahedron with one face removed: not closed
+        assertFalse(isClosed(new TriangleMesh(tetrahedronVertices(), new int[] { 0, 2, 1, 0, 1, 3, 0, 3, 2 })),
+                "TC03: a tetrahedron without a face is open");
+        // TC04: two tetrahedra far apart in one mesh: every edge shared twice, closed
+        assertTrue(isClosed(merge(tetrahedron(Point3D.ZERO), tetrahedron(new Point3D(10, 0, 0)))),
+                "TC04: two separate tetrahedra are closed");
+        // TC05: a cube whose x-max face uses a copy of vertex 7 (same position, index 8): open by index
+        assertFalse(isClosed(cubeWithCopiedVertex()), "TC05: a copied vertex opens the mesh");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a single triangle: open
+        assertFalse(isClosed(new TriangleMesh(tetrahedronVertices(), new int[] { 0, 1, 2 })),
+                "TC11: a single triangle is open");
+        // TC12: a tetrahedron plus a copy of one of its faces: three edges used three times, open
+        assertFalse(isClosed(new TriangleMesh(tetrahedronVertices(), concat(tetrahedronFaces(),
+                new int[] { 1, 2, 3 }))), "TC12: a face listed twice leaves edges used three times");
+        // TC13: a triangle listed twice, once each way round: every edge used twice, closed (though flat)
+        assertTrue(isClosed(new TriangleMesh(tetrahedronVertices(), new int[] { 0, 1, 2, 0, 2, 1 })),
+                "TC13: a triangle and its reverse share every edge");
+        // TC14: the tetrahedron with one face turned the other way round: edges by index, closed
+        assertTrue(isClosed(new TriangleMesh(tetrahedronVertices(), new int[] { 0, 2, 1, 0, 1, 3, 0, 3, 2,
+                1, 3, 2 })), "TC14: the faces' orientation must not matter");
+        // TC15: two tetrahedra sharing an edge (a bow tie): that edge used four times, closed
+        double[] bowTie = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1 };
+        assertTrue(isClosed(new TriangleMesh(bowTie, concat(tetrahedronFaces(),
+                new int[] { 0, 1, 4, 0, 5, 1, 0, 4, 5, 1, 5, 4 }))), "TC15: an edge shared by four triangles is closed");
     }
 
     /** Test method for {@link ClosedParts#of(TriangleMesh)}. */

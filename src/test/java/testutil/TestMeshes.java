@@ -4,7 +4,10 @@ import geometries.TriangleMesh;
 import benchmark.SphereMesh;
 import primitives.Point3D;
 
-/** Small triangle meshes shared by the tests and the benchmark: a cube, a box, one mesh of several, and a bowl. */
+/**
+ * Small triangle meshes shared by the tests and the benchmark: a cube, a box, a tetrahedron, one mesh
+ * of several, and a bowl.
+ */
 public final class TestMeshes {
     /** Not instantiable. */
     private TestMeshes() {
@@ -49,6 +52,32 @@ public final class TestMeshes {
     public static int[] cubeFaces() {
         return new int[] { 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2,
                 1, 3, 7, 1, 7, 5 };
+    }
+
+    /** {@return the coordinates of the tetrahedron (0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)} */
+    public static double[] tetrahedronVertices() {
+        return new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+    }
+
+    /** {@return the four faces of {@link #tetrahedronVertices}'s tetrahedron, by vertex index, facing out} */
+    public static int[] tetrahedronFaces() {
+        return new int[] { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+    }
+
+    /**
+     * The tetrahedron (0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1) moved by a point.
+     *
+     * @param at where the first vertex goes
+     * @return the mesh
+     */
+    public static TriangleMesh tetrahedron(Point3D at) {
+        double[] vertices = tetrahedronVertices();
+        for (int i = 0; i < vertices.length; i += 3) {
+            vertices[i] += at.getX();
+            vertices[i + 1] += at.getY();
+            vertices[i + 2] += at.getZ();
+        }
+        return new TriangleMesh(vertices, tetrahedronFaces());
     }
 
     /**
