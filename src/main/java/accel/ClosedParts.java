@@ -75,14 +75,16 @@ final class ClosedParts {
         int[] indices = mesh.indices();
         int[] partOf = connectedParts(welded, indices);
         List<Part> parts = new ArrayList<>();
+        int[] renumbered = new int[welded.length];
+        Arrays.fill(renumbered, -1);
         for (int[] triangles : partsToClose(welded, partOf)) {
             HoleCaps caps = null;
             if (!isClosed(welded, indices, triangles)) {
-                caps = HoleCaps.of(mesh, welded, triangles);
+                caps = HoleCaps.of(mesh, welded, indices, triangles);
                 if (caps == null)
                     continue;
             }
-            TriangleMesh part = subMesh(mesh, welded, triangles, caps);
+            TriangleMesh part = subMesh(mesh, welded, triangles, caps, renumbered);
             double[] innerBoxes = InnerBoxes.of(part);
             if (innerBoxes.length > 0) {
                 double[] box = new double[6];
@@ -211,15 +213,29 @@ final class ClosedParts {
                 mixed ^= mix(edgeKey(vertexOf, indices, 3 * t + k));
         if (mixed != 0)
             return false;
+        long[] edges = sortedEdges(vertexOf, indices, triangles);
+        for (int i = 0; i < edges.length; i += 2)
+            if (edges[i] != edges[i + 1])
+                return false;
+        return true;
+    }
+
+    /**
+     * The edges of some triangles, by vertex, sorted: each the smaller vertex in the high bits and the
+     * larger in the low ones, once per triangle that uses it.
+     *
+     * @param vertexOf  per vertex index, the vertex it stands for (itself, or its welded vertex)
+     * @param indices   the triangles' vertex indices, three per triangle
+     * @param triangles the triangles
+     * @return their edges' keys, sorted
+     */
+    static long[] sortedEdges(int[] vertexOf, int[] indices, int[] triangles) {
         long[] edges = new long[3 * triangles.length];
         for (int i = 0; i < triangles.length; ++i)
             for (int k = 0; k < 3; ++k)
                 edges[3 * i + k] = edgeKey(vertexOf, indices, 3 * triangles[i] + k);
         Arrays.sort(edges);
-        for (int i = 0; i < edges.length; i += 2)
-            if (edges[i] != edges[i + 1])
-                return false;
-        return true;
+        return edges;
     }
 
     /** {@return a key's bits well mixed (SplitMix64's finaliser), so different keys rarely cancel} */
@@ -241,17 +257,18 @@ final class ClosedParts {
      * The mesh of some of a mesh's triangles over its welded vertices, each corner in its order, and
      * of the caps over their holes.
      *
-     * @param mesh      the mesh
-     * @param welded    per vertex, its welded vertex
-     * @param triangles the triangles
-     * @param caps      the caps over their holes, or null
+     * @param mesh       the mesh
+     * @param welded     per vertex, its welded vertex
+     * @param triangles  the triangles
+     * @param caps       the caps over their holes, or null
+     * @param renumbered scratch space, per welded vertex −1, as it is left again: a mesh's parts are
+     *                   many, and most are small
      * @return the part's own mesh (its vertices the same doubles), closed when capped
      */
-    private static TriangleMesh subMesh(TriangleMesh mesh, int[] welded, int[] triangles, HoleCaps caps) {
+    private static TriangleMesh subMesh(TriangleMesh mesh, int[] welded, int[] triangles, HoleCaps caps,
+            int[] renumbered) {
         int capCount = caps == null ? 0 : caps.triangles.length / 3;
         int holes = caps == null ? 0 : caps.centroids.length / 3;
-        int[] renumbered = new int[welded.length];
-        Arrays.fill(renumbered, -1);
         double[] vertices = new double[9 * triangles.length + 3 * holes];
         int[] indices = new int[3 * (triangles.length + capCount)];
         int count = 0;
@@ -277,6 +294,9 @@ final class ClosedParts {
             }
             count += holes;
         }
+        for (int i = 0; i < triangles.length; ++i)
+            for (int k = 0; k < 3; ++k)
+                renumbered[welded[mesh.getVertexIndex(triangles[i], k)]] = -1;
         return new TriangleMesh(Arrays.copyOf(vertices, 3 * count), indices);
     }
 }

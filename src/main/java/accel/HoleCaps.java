@@ -41,13 +41,14 @@ final class HoleCaps {
     /**
      * The caps over the holes of a part of a mesh.
      *
-     * @param mesh   the mesh
-     * @param welded per vertex, its welded vertex
-     * @param part   the part's triangles, connected, not closed
+     * @param mesh    the mesh
+     * @param welded  per vertex, its welded vertex
+     * @param indices the mesh's triangles' vertex indices, three per triangle
+     * @param part    the part's triangles, connected, not closed
      * @return the caps, or null when a hole is too large, does not close, or its cap would be degenerate
      */
-    static HoleCaps of(TriangleMesh mesh, int[] welded, int[] part) {
-        long[] edges = boundaryEdges(mesh, welded, part);
+    static HoleCaps of(TriangleMesh mesh, int[] welded, int[] indices, int[] part) {
+        long[] edges = boundaryEdges(welded, indices, part);
         Map<Integer, Integer> slots = new HashMap<>(); // boundary vertex -> its place
         for (long edge : edges) {
             slots.putIfAbsent((int) (edge >>> 32), slots.size());
@@ -100,48 +101,20 @@ final class HoleCaps {
         return caps.small(meshBox) && caps.fits(mesh, boxOf(mesh, part)) ? caps : null;
     }
 
-    /**
-     * The part's edges used an odd number of times, by welded vertex, the smaller one in the high bits:
-     * the edges grouped by their smaller vertex (a counting sort), and counted within each group.
-     */
-    private static long[] boundaryEdges(TriangleMesh mesh, int[] welded, int[] part) {
-        int[] start = new int[welded.length + 1];
-        for (int t : part)
-            for (int k = 0; k < 3; ++k)
-                ++start[low(mesh, welded, t, k) + 1];
-        for (int v = 0; v < welded.length; ++v)
-            start[v + 1] += start[v];
-        int[] next = Arrays.copyOf(start, welded.length);
-        int[] others = new int[3 * part.length]; // per edge in its group: its larger vertex
-        for (int t : part)
-            for (int k = 0; k < 3; ++k)
-                others[next[low(mesh, welded, t, k)]++] = high(mesh, welded, t, k);
-        long[] odd = new long[others.length];
+    /** {@return the part's edges used an odd number of times, sorted (see {@link ClosedParts#sortedEdges})} */
+    private static long[] boundaryEdges(int[] welded, int[] indices, int[] part) {
+        long[] edges = ClosedParts.sortedEdges(welded, indices, part);
+        long[] odd = new long[edges.length];
         int count = 0;
-        for (int v = 0; v < welded.length; ++v) {
-            int from = start[v];
-            int to = start[v + 1];
-            Arrays.sort(others, from, to); // a vertex has a few edges
-            for (int i = from; i < to; ) {
-                int j = i;
-                while (j < to && others[j] == others[i])
-                    ++j;
-                if ((j - i) % 2 != 0)
-                    odd[count++] = (long) v << 32 | others[i];
-                i = j;
-            }
+        for (int i = 0; i < edges.length; ) {
+            int j = i;
+            while (j < edges.length && edges[j] == edges[i])
+                ++j;
+            if ((j - i) % 2 != 0)
+                odd[count++] = edges[i];
+            i = j;
         }
         return Arrays.copyOf(odd, count);
-    }
-
-    /** {@return the smaller welded vertex of the edge from corner k of triangle t to the next corner} */
-    private static int low(TriangleMesh mesh, int[] welded, int t, int k) {
-        return Math.min(welded[mesh.getVertexIndex(t, k)], welded[mesh.getVertexIndex(t, (k + 1) % 3)]);
-    }
-
-    /** {@return the larger welded vertex of the edge from corner k of triangle t to the next corner} */
-    private static int high(TriangleMesh mesh, int[] welded, int t, int k) {
-        return Math.max(welded[mesh.getVertexIndex(t, k)], welded[mesh.getVertexIndex(t, (k + 1) % 3)]);
     }
 
     /** Adds a vertex of hole h to the sums of the centroids and to the hole's box. */

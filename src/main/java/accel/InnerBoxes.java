@@ -1,7 +1,6 @@
 package accel;
 
 import geometries.TriangleMesh;
-import java.util.ArrayDeque;
 import java.util.Arrays;
 
 /**
@@ -117,36 +116,35 @@ final class InnerBoxes {
 
     /** Groups the untouched cells face to face and tells each group inside (1) or {@link #OUTSIDE}. */
     private void classify() {
-        int[] groups = new int[state.length];
-        Arrays.fill(groups, -1);
-        ArrayDeque<Integer> queue = new ArrayDeque<>();
+        boolean[] reached = new boolean[state.length];
+        // a group's cells in the order the flood reaches them: its queue, and then its members
         int[] members = new int[state.length];
+        int[] stride = { 1, n[0], n[0] * n[1] };
+        int[] at = new int[3];
         for (int start = 0; start < state.length; ++start) {
-            if (state[start] == TOUCHED || groups[start] >= 0)
+            if (state[start] == TOUCHED || reached[start])
                 continue;
             int count = 0;
             boolean border = false;
-            groups[start] = start;
-            queue.add(start);
-            while (!queue.isEmpty()) {
-                int c = queue.poll();
-                members[count++] = c;
-                int i = c % n[0];
-                int j = c / n[0] % n[1];
-                int k = c / (n[0] * n[1]);
-                border |= i == 0 || j == 0 || k == 0 || i == n[0] - 1 || j == n[1] - 1 || k == n[2] - 1;
-                for (int axis = 0; axis < 3; ++axis)
+            reached[start] = true;
+            members[count++] = start;
+            for (int head = 0; head < count; ++head) {
+                int c = members[head];
+                at[0] = c % n[0];
+                at[1] = c / n[0] % n[1];
+                at[2] = c / stride[2];
+                for (int axis = 0; axis < 3; ++axis) {
+                    border |= at[axis] == 0 || at[axis] == n[axis] - 1;
                     for (int step = -1; step <= 1; step += 2) {
-                        int[] at = { i, j, k };
-                        at[axis] += step;
-                        if (at[axis] < 0 || at[axis] >= n[axis])
+                        if (at[axis] + step < 0 || at[axis] + step >= n[axis])
                             continue;
-                        int d = index(at[0], at[1], at[2]);
-                        if (state[d] != TOUCHED && groups[d] < 0) {
-                            groups[d] = start;
-                            queue.add(d);
+                        int d = c + step * stride[axis];
+                        if (state[d] != TOUCHED && !reached[d]) {
+                            reached[d] = true;
+                            members[count++] = d;
                         }
                     }
+                }
             }
             int verdict = !border && surelyInside(members, count) ? 1 : OUTSIDE;
             for (int m = 0; m < count; ++m)
@@ -220,36 +218,38 @@ final class InnerBoxes {
         return seeds;
     }
 
-    /** Per inside cell, its chessboard distance in cells to the nearest cell not inside (1 next to one). */
+    /**
+     * Per inside cell, its chessboard distance in cells to the nearest cell not inside (1 next to one):
+     * the two raster passes of Rosenfeld and Pfaltz, each taking the least depth of the 13 neighbours
+     * it has passed, plus one. Both are exact for the chessboard distance; no inside cell lies on the
+     * grid's border, so all 26 neighbours of one exist.
+     */
     private int[] depths() {
+        int[] before = new int[13];
+        int count = 0;
+        for (int dk = -1; dk <= 1; ++dk)
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di) {
+                    int offset = (dk * n[1] + dj) * n[0] + di;
+                    if (offset < 0)
+                        before[count++] = offset;
+                }
         int[] depth = new int[state.length];
-        ArrayDeque<Integer> queue = new ArrayDeque<>();
         for (int c = 0; c < state.length; ++c)
-            if (state[c] != 1)
-                queue.add(c);
-            else
-                depth[c] = Integer.MAX_VALUE;
-        while (!queue.isEmpty()) {
-            int c = queue.poll();
-            int i = c % n[0];
-            int j = c / n[0] % n[1];
-            int k = c / (n[0] * n[1]);
-            for (int dk = -1; dk <= 1; ++dk)
-                for (int dj = -1; dj <= 1; ++dj)
-                    for (int di = -1; di <= 1; ++di) {
-                        int x = i + di;
-                        int y = j + dj;
-                        int z = k + dk;
-                        if (x < 0 || y < 0 || z < 0 || x >= n[0] || y >= n[1] || z >= n[2])
-                            continue;
-                        int d = index(x, y, z);
-                        if (depth[d] == Integer.MAX_VALUE) {
-                            depth[d] = depth[c] + 1;
-                            queue.add(d);
-                        }
-                    }
-        }
+            if (state[c] == 1)
+                depth[c] = 1 + leastDepth(depth, c, before, 1);
+        for (int c = state.length - 1; c >= 0; --c)
+            if (state[c] == 1)
+                depth[c] = Math.min(depth[c], 1 + leastDepth(depth, c, before, -1));
         return depth;
+    }
+
+    /** {@return the least depth of a cell's neighbours at the offsets, times a sign} */
+    private static int leastDepth(int[] depth, int c, int[] offsets, int sign) {
+        int least = Integer.MAX_VALUE;
+        for (int offset : offsets)
+            least = Math.min(least, depth[c + sign * offset]);
+        return least;
     }
 
     /**

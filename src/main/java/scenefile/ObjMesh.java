@@ -16,7 +16,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.NoSuchElementException;
 import java.util.function.Predicate;
-import java.util.regex.Pattern;
 
 import de.javagl.obj.FloatTuple;
 import de.javagl.obj.Obj;
@@ -366,22 +365,27 @@ public final class ObjMesh {
             for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
                 int start = first && buffer[0] == BYTE_ORDER_MARK ? 1 : 0;
                 first = false;
-                for (int k = start; k < n; ++k) {
+                for (int k = start; k < n; ++k)
                     if (buffer[k] == '\n') {
+                        appendToLine(line, buffer, start, k, checker);
                         checker.accept(line);
                         text.append(line).append('\n');
                         line.setLength(0);
-                    } else if (line.length() == MAX_LINE_LENGTH)
-                        throw checker.error("the line is longer than " + MAX_LINE_LENGTH
-                                + " characters (is it an OBJ file?)");
-                    else
-                        line.append(buffer[k]);
-                }
+                        start = k + 1;
+                    }
+                appendToLine(line, buffer, start, n, checker);
             }
         }
         checker.accept(line);
         checker.finish();
         return text.append(line).toString();
+    }
+
+    /** Appends the characters [from, to) of a buffer to the line, refusing a line longer than the limit. */
+    private static void appendToLine(StringBuilder line, char[] buffer, int from, int to, FaceIndexChecker checker) {
+        if (line.length() + to - from > MAX_LINE_LENGTH)
+            throw checker.error("the line is longer than " + MAX_LINE_LENGTH + " characters (is it an OBJ file?)");
+        line.append(buffer, from, to - from);
     }
 
     /** Builds every vertex's point once: position + scale·v. */
@@ -412,7 +416,6 @@ public final class ObjMesh {
      * left to the library.
      */
     private static final class FaceIndexChecker {
-        private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
         /** The statements that define what a face's indices name: positions, texture coordinates, normals. */
         private static final String[] KEYWORDS = { "v", "vt", "vn" };
         /** What each kind of index names, one and many. */
@@ -439,11 +442,7 @@ public final class ObjMesh {
                 if (starts(text, KEYWORDS[kind]))
                     ++counts[kind];
             if (starts(text, "f"))
-                for (String item : text.substring(1).strip().split("\\s+")) {
-                    String[] parts = item.split("/", -1);
-                    for (int kind = 0; kind < Math.min(parts.length, KEYWORDS.length); ++kind)
-                        check(parts[kind], kind);
-                }
+                checkFace(text.substring(1).strip());
             ++lineNumber;
         }
 
@@ -453,19 +452,54 @@ public final class ObjMesh {
                     && (text.length() == keyword.length() || Character.isWhitespace(text.charAt(keyword.length())));
         }
 
-        private void check(String item, int kind) {
-            if (!WHOLE.matcher(item).matches())
+        /**
+         * Checks a face's corners, which runs of blanks separate (the blanks of the regular expression
+         * {@code \s}; the text is stripped, so it starts and ends with a corner).
+         */
+        private void checkFace(String corners) {
+            int end = corners.length();
+            int start = 0;
+            while (start < end) {
+                int cornerEnd = start;
+                while (cornerEnd < end && !isBlank(corners.charAt(cornerEnd)))
+                    ++cornerEnd;
+                checkCorner(corners, start, cornerEnd);
+                start = cornerEnd;
+                while (start < end && isBlank(corners.charAt(start)))
+                    ++start;
+            }
+        }
+
+        /** Checks a corner, the characters [from, to) of a text: its indices, which slashes separate. */
+        private void checkCorner(String text, int from, int to) {
+            for (int kind = 0; kind < KEYWORDS.length && from <= to; ++kind) {
+                int slash = text.indexOf('/', from);
+                int indexEnd = slash < 0 || slash > to ? to : slash;
+                check(text, from, indexEnd, kind);
+                from = indexEnd + 1;
+            }
+        }
+
+        /** {@return whether a character is a blank of the regular expression {@code \s}} */
+        private static boolean isBlank(char c) {
+            return c == ' ' || c == '\t' || c == '\n' || c == '\u000B' || c == '\f' || c == '\r';
+        }
+
+        /** Checks one index, the characters [from, to) of a text: a whole number, or anything the library refuses. */
+        private void check(String text, int from, int to, int kind) {
+            if (!isWhole(text, from, to))
                 return;
             long index;
             try {
-                index = Long.parseLong(item);
+                index = Long.parseLong(text, from, to, 10);
             } catch (NumberFormatException e) {
-                index = item.startsWith("-") ? Long.MIN_VALUE : Long.MAX_VALUE;
+                index = text.charAt(from) == '-' ? Long.MIN_VALUE : Long.MAX_VALUE;
             }
             if (index == 0)
                 throw error("a face refers to " + ONE[kind] + " 0; " + MANY[kind] + " count from 1 (or back from -1)");
             if (index > Integer.MAX_VALUE || index < -Integer.MAX_VALUE)
-                throw error("a face refers to " + ONE[kind] + " " + item + ", beyond any number of " + MANY[kind]);
+                throw error("a face refers to " + ONE[kind] + " " + text.substring(from, to) + ", beyond any number of "
+                        + MANY[kind]);
             if (index < 0 && -index > counts[kind])
                 throw error("a face refers to a " + ONE[kind] + " before the first one (relative index " + index
                         + " too far back)");
@@ -473,6 +507,17 @@ public final class ObjMesh {
                 forwardLines[kind] = lineNumber;
                 forwardIndices[kind] = index;
             }
+        }
+
+        /** {@return whether the characters [from, to) of a text are a sign, or none, then ASCII digits} */
+        private static boolean isWhole(String text, int from, int to) {
+            int digits = from < to && (text.charAt(from) == '+' || text.charAt(from) == '-') ? from + 1 : from;
+            if (digits == to)
+                return false;
+            for (int k = digits; k < to; ++k)
+                if (text.charAt(k) < '0' || text.charAt(k) > '9')
+                    return false;
+            return true;
         }
 
         /** Checks, at the end of the file, that indices naming later vertices (and so on) name existing ones. */

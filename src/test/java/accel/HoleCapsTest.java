@@ -19,10 +19,11 @@ class HoleCapsTest {
 
     /** {@return the caps over the holes of a mesh taken as one part} */
     private static HoleCaps capsOf(TriangleMesh mesh) {
-        return HoleCaps.of(mesh, ClosedParts.weld(mesh), IntStream.range(0, mesh.getTrianglesCount()).toArray());
+        return HoleCaps.of(mesh, ClosedParts.weld(mesh), mesh.indices(),
+                IntStream.range(0, mesh.getTrianglesCount()).toArray());
     }
 
-    /** Test method for {@link HoleCaps#of(TriangleMesh, int[], int[])}. */
+    /** Test method for {@link HoleCaps#of(TriangleMesh, int[], int[], int[])}. */
     @Test
     void testOf() {
         // ===== Equivalence Partitions Tests =====

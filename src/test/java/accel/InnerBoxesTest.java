@@ -55,13 +55,17 @@ class InnerBoxesTest {
     @Test
     void testOf() {
         // ===== Equivalence Partitions Tests =====
-        // TC01: a cube [0, 10]³: boxes inside it, the first (the largest) at least 6 wide each way
+        // TC01: a cube [0, 10]³: boxes inside it, the first (the largest) its whole inside
         TriangleMesh box = cube(0, 0, 0, 10);
         double[] inCube = InnerBoxes.of(box);
         assertTrue(inCube.length >= 6, "TC01: a cube has an inner box");
         assertInside(box, inCube, "TC01");
-        for (int k = 0; k < 3; ++k)
-            assertTrue(inCube[3 + k] - inCube[k] >= 6, "TC01: the first box is at least 6 wide along axis " + k);
+        // ... and it is all of the cube's inside cells: 4,096 cells of 0.625 over the box, those of the faces
+        // touched, so [0.625, 9.375] each way (the grown box of the deepest cell, its depth a chessboard distance)
+        for (int k = 0; k < 3; ++k) {
+            assertEquals(0.625, inCube[k], 1e-6, "TC01: the first box's low side along axis " + k);
+            assertEquals(9.375, inCube[3 + k], 1e-6, "TC01: the first box's high side along axis " + k);
+        }
         // TC02: a sphere's mesh of radius 5 around (1, 2, 3): every box corner within the radius
         Point3D centre = new Point3D(1, 2, 3);
         TriangleMesh sphere = SphereMesh.mesh(centre, 5, 16, 24);

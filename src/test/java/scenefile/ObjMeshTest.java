@@ -329,6 +329,11 @@ class ObjMeshTest {
                 "TC16: bad face");
         assertPrintable(bad.getMessage(), "\\x9B2J", "TC16");
         assertPrintable(bad.getMessage(), "csi\\x1B.obj", "TC16");
+        // TC17 (own): corners of every form (v, v/vt, v//vn, +v/vt/vn) between tabs and spaces: the normal
+        // index past the last normal is named, with its line
+        Path forms = TestFiles.write(folder, "forms.obj",
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1\t2/1 \t+3//2\nf 1 2/1/1 +3/1/1\n");
+        assertBadFile(forms, "TC17", "forms.obj:6: a face refers to normal (vn) 2, but the file has 1 normals");
 
         // ===== Boundary Values Tests =====
         // TC21: an empty file
