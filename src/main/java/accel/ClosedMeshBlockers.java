@@ -51,9 +51,12 @@ final class ClosedMeshBlockers {
      *
      * @param blocker the blocker's place in {@link #blockers}
      * @param box     the inner box, {minX, minY, minZ, maxX, maxY, maxZ}
-     * @param size    half the box's shortest side
      */
-    private record Core(int blocker, double[] box, double size) {
+    private record Core(int blocker, double[] box) {
+        /** {@return the core's size: half its box's shortest side} */
+        double size() {
+            return InnerBoxes.halfShortestSide(box, 0);
+        }
     }
 
     /**
@@ -90,9 +93,9 @@ final class ClosedMeshBlockers {
             ClosedParts.Part part = blockers[s].part;
             double[] inner = part.innerBoxes();
             for (int b = 0; b < inner.length; b += 6)
-                all.add(new Core(s, Arrays.copyOfRange(inner, b, b + 6), InnerBoxes.halfShortestSide(inner, b)));
+                all.add(new Core(s, Arrays.copyOfRange(inner, b, b + 6)));
         }
-        return all.stream().filter(core -> core.size >= least).sorted(Comparator.comparingDouble(Core::size).reversed())
+        return all.stream().filter(core -> core.size() >= least).sorted(Comparator.comparingDouble(Core::size).reversed())
                 .limit(MAX_CORES).toArray(Core[]::new);
     }
 

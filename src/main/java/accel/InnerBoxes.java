@@ -96,6 +96,14 @@ final class InnerBoxes {
         return (k * n[1] + j) * n[0] + i;
     }
 
+    /** {@return the place, i, j and k, of the cell of an index: the inverse of {@link #index}, in at} */
+    private int[] cellOf(int c, int[] at) {
+        at[0] = c % n[0];
+        at[1] = c / n[0] % n[1];
+        at[2] = c / (n[0] * n[1]);
+        return at;
+    }
+
     /** Marks the cells that a triangle's box, grown a little, reaches. */
     private void markTouched() {
         double[] tb = new double[6];
@@ -130,9 +138,7 @@ final class InnerBoxes {
             members[count++] = start;
             for (int head = 0; head < count; ++head) {
                 int c = members[head];
-                at[0] = c % n[0];
-                at[1] = c / n[0] % n[1];
-                at[2] = c / stride[2];
+                cellOf(c, at);
                 for (int axis = 0; axis < 3; ++axis) {
                     border |= at[axis] == 0 || at[axis] == n[axis] - 1;
                     for (int step = -1; step <= 1; step += 2) {
@@ -155,12 +161,9 @@ final class InnerBoxes {
     /** Whether the parity rays from one of a few cells of a group say surely that it lies inside. */
     private boolean surelyInside(int[] members, int count) {
         for (int tried = 0; tried < Math.min(TRIES, count); ++tried) {
-            int c = members[tried * count / Math.min(TRIES, count)];
-            int i = c % n[0];
-            int j = c / n[0] % n[1];
-            int k = c / (n[0] * n[1]);
-            int verdict = InsideParity.parity(mesh, origin[0] + (i + 0.5) * cell, origin[1] + (j + 0.5) * cell,
-                    origin[2] + (k + 0.5) * cell);
+            int[] at = cellOf(members[tried * count / Math.min(TRIES, count)], new int[3]);
+            int verdict = InsideParity.parity(mesh, origin[0] + (at[0] + 0.5) * cell,
+                    origin[1] + (at[1] + 0.5) * cell, origin[2] + (at[2] + 0.5) * cell);
             if (verdict >= 0)
                 return verdict == 1;
         }
@@ -258,10 +261,9 @@ final class InnerBoxes {
      * @return {i0, j0, k0, i1, j1, k1}, inclusive
      */
     private int[] grow(int seed, int radius) {
-        int i = seed % n[0];
-        int j = seed / n[0] % n[1];
-        int k = seed / (n[0] * n[1]);
-        int[] range = { i - radius, j - radius, k - radius, i + radius, j + radius, k + radius };
+        int[] at = cellOf(seed, new int[3]);
+        int[] range = { at[0] - radius, at[1] - radius, at[2] - radius, at[0] + radius, at[1] + radius,
+                at[2] + radius };
         boolean grew = true;
         while (grew) {
             grew = false;

@@ -231,10 +231,11 @@ class ClosedMeshBlockersTest {
         RayState state = new RayState().set(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5], ray[6]).invert();
         for (TriangleMesh mesh : meshes)
             for (ClosedParts.Part part : ClosedParts.of(mesh)) {
+                if (mesh.getMaterial().getKt() != 0 || part.capBoxes().length > 0)
+                    continue;
                 double[] inner = part.innerBoxes();
                 for (int b = 0; b < inner.length; b += 6)
-                    if (mesh.getMaterial().getKt() == 0 && part.capBoxes().length == 0
-                            && state.boxEntry(inner, b, ray[6]) != RayState.MISSED)
+                    if (state.boxEntry(inner, b, ray[6]) != RayState.MISSED)
                         return true;
             }
         return false;
