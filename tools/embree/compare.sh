@@ -9,7 +9,7 @@ MODELS=${2:-../shared/models}
 BENCH=$(dirname "$0")/embree_bench
 CP=target/classes:target/test-classes:$(cat cp.txt)
 for r in $(seq "$ROUNDS"); do
-  for s in cow fandisk rocker-arm teapot ogre; do
+  for s in cow fandisk rocker-arm teapot ogre suzanne; do
     scene=obj:$MODELS/$s.obj
     [ -f "$MODELS/$s.obj" ] || { echo "$s: no $MODELS/$s.obj, skipped"; continue; }
     packet=$("$BENCH" --scene "$scene" --mode packet | grep -o 'median_s=[0-9.]*' | cut -d= -f2)

@@ -18,8 +18,11 @@ import primitives.Point3D;
  * ({@link ClosedMeshBlockers}).
  */
 final class HoleCaps {
-    /** The largest hole capped, its box's longest side relative to the part's: a larger one would shut out most rays. */
-    static final double MAX_HOLE = 0.15;
+    /**
+     * The largest hole capped, its box's longest side relative to the part's: an eye socket (a fifth of a
+     * head) is capped, a larger hole's box would shut out most rays through the cores.
+     */
+    static final double MAX_HOLE = 0.25;
     /** How much a cap's box is grown, relative to the part's extent: it must hold every ray the renderer's test lets slip past the boundary. */
     private static final double GROW = 1e-6;
     /** The least sine of a cap triangle's angles: a flatter one would be refused as a mesh triangle. */

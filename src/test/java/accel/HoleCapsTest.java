@@ -47,8 +47,12 @@ class HoleCapsTest {
         // ===== Boundary Values Tests =====
         // TC11: a bowl of 8 rings: its hole, 38 % of its extent across, is too large
         assertNull(capsOf(TestMeshes.bowl(new Point3D(1, 2, 3), 2, 8, 16)), "TC11: a wide hole is not capped");
-        // TC12: a square of two triangles: its rim is all of it
+        // TC12: a bowl of 14 rings: its hole, 22 % across (an eye socket's size), is capped
+        assertNotNull(capsOf(TestMeshes.bowl(new Point3D(1, 2, 3), 2, 14, 16)), "TC12: a hole 22 % across is capped");
+        // TC13: a bowl of 12 rings: its hole, 26 % across, is too large
+        assertNull(capsOf(TestMeshes.bowl(new Point3D(1, 2, 3), 2, 12, 16)), "TC13: a hole 26 % across is not capped");
+        // TC14: a square of two triangles: its rim is all of it
         assertNull(capsOf(new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 },
-                new int[] { 0, 1, 2, 0, 2, 3 })), "TC12: a square is not capped");
+                new int[] { 0, 1, 2, 0, 2, 3 })), "TC14: a square is not capped");
     }
 }
