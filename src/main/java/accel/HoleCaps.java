@@ -13,8 +13,8 @@ import primitives.Point3D;
  * times, and its cap is the fan of triangles from the centroid of its vertices over those edges. Each
  * boundary edge is then used once more and each spoke of a fan twice (every vertex of a hole has an
  * even number of boundary edges, or the part is not capped), so the part and its caps close a volume,
- * with cores inside ({@link InnerBoxes}). The caps are not the mesh's and block
- * nothing: a ray through such a core that meets no cap's box still crosses the part's own triangles
+ * with cores inside ({@link InnerBoxes}). The caps are not the mesh's and block nothing: a ray
+ * through such a core that meets no cap's box still crosses the part's own triangles
  * ({@link ClosedMeshBlockers}).
  */
 final class HoleCaps {
