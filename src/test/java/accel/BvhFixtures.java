@@ -48,13 +48,26 @@ import testutil.TestBundles;
 import testutil.TestScenes.TestScene;
 
 /**
- * Fixtures of the bundle tests that need the package's own access ({@link ShadowFrustum#originOf},
- * {@link ShadowFrustum#originsBehind}): random bundles through scenes, bundles leaving a mesh's surface,
- * and the surfaces of triangles the gather leaves out between a bundle's two starts.
+ * Fixtures of the tests that need the package's own access ({@link ShadowFrustum#originOf},
+ * {@link ShadowFrustum#originsBehind}, the builder): builds of the tree's parts, random bundles through
+ * scenes, bundles leaving a mesh's surface, and the surfaces of triangles the gather leaves out between a
+ * bundle's two starts.
  */
 final class BvhFixtures {
     /** Not instantiable. */
     private BvhFixtures() {
+    }
+
+    /**
+     * A build over some geometries on one thread, done, as the hierarchy makes it.
+     *
+     * @param owners the geometries of the tree
+     * @return the builder, its nodes and leaf order made
+     */
+    static BvhBuilder built(Geometry... owners) {
+        BvhBuilder builder = new BvhBuilder(owners, 1);
+        builder.build();
+        return builder;
     }
 
     /**
