@@ -44,7 +44,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 import accel.BvhFixtures.GatherCounts;
-import accel.BvhFixtures.StartCounts;
+import accel.BvhFixtures.OriginCounts;
 import accel.BvhFixtures.Straddling;
 import accel.BvhFixtures.Surface;
 import benchmark.SphereMesh;
@@ -64,12 +64,12 @@ import testutil.TestScenes.Wrapper;
 /**
  * Unit tests for {@link BundleGather}, through {@link BoundingVolumeHierarchy#gather} and
  * {@link BoundingVolumeHierarchy#bundleRayTransmittance}: what a bundle gathers, open bundles, and the rays
- * of a gathered bundle, also from either of its starts ({@link ShadowFrustum#setOrigins}).
+ * of a gathered bundle, also from either of its ray origins ({@link ShadowFrustum#setOrigins}).
  */
 class BundleGatherTest {
     /**
      * Test method for {@link BoundingVolumeHierarchy#gather} and
-     * {@link BoundingVolumeHierarchy#gatheredTransmittance}: on seeded random scenes, every ray of a
+     * {@link BoundingVolumeHierarchy#bundleRayTransmittance}: on seeded random scenes, every ray of a
      * bundle has the transmittance the tree gives it, whether gather found nothing, a few bodies or
      * (more than 32 of them) a subtree.
      */
@@ -79,8 +79,8 @@ class BundleGatherTest {
         // TC01: opaque random scenes (with planes, a tube, cylinders, squares, bodies that are not
         // Geometry, nested composites, a dense mesh): 60 bundles each from random apexes on (thick), in,
         // near and away from the bodies to random narrow and wide squares, 40 rays each:
-        // gatheredTransmittance = transmittance, 0 or 1, and so is the answer of each ray of the
-        // bundle traced as one packet (gatheredTransmittances)
+        // bundleRayTransmittance = transmittance, 0 or 1, and so is the answer of each ray of the
+        // bundle traced as one packet (packetTransmittances)
         Random rnd = new Random(7031);
         GatherCounts opaque = new GatherCounts();
         for (int s : new int[] { 0, 2, 3, 5, 6, 7, 8, 9, 13, 15, 17, 19 })
@@ -388,9 +388,9 @@ class BundleGatherTest {
 
     /**
      * Test method for {@link BoundingVolumeHierarchy#gather} and
-     * {@link BoundingVolumeHierarchy#gatheredTransmittance} on bundles that leave a mesh's surface, set
+     * {@link BoundingVolumeHierarchy#bundleRayTransmittance} on bundles that leave a mesh's surface, set
      * as the renderer sets them ({@link ShadowFrustum#setBackFace}, {@link ShadowFrustum#setOrigins}):
-     * every ray's answer equals the brute-force scan's, though gathered triangles behind a ray's start
+     * every ray's answer equals the brute-force scan's, though gathered triangles behind a ray's origin
      * are skipped, and a bundle leaving a convex mesh gathers nothing.
      */
     @Test
@@ -402,9 +402,9 @@ class BundleGatherTest {
         // TC01: a tessellated sphere (radius 6, 960 triangles, one TriangleMesh) with 4 small spheres
         // around, and a bumpy height field (1152 triangles) with a sphere over it; opaque, and with kT
         // 0.5 everywhere (its products are exact in any order): 200 bundles each from random points of
-        // the meshes, half of them straddling the tangent plane, 30 rays each: gatheredTransmittance
+        // the meshes, half of them straddling the tangent plane, 30 rays each: bundleRayTransmittance
         // (and the packet's answer) = the scan's transmittance, exactly
-        StartCounts counts = new StartCounts();
+        OriginCounts counts = new OriginCounts();
         for (int scene = 0; scene < 4; ++scene) {
             TriangleMesh mesh = scene % 2 == 0 ? SphereMesh.mesh(Point3D.ZERO, 6, 16, 32) : bumpyMesh();
             Geometries geometries = new Geometries(mesh);
@@ -473,7 +473,7 @@ class BundleGatherTest {
         // ===== Boundary Values Tests =====
         // TC11: bundles leaving the meshes' vertices, each shared by several triangles whose planes pass
         // through the point: every ray's answer is the scan's, exactly
-        StartCounts atVertices = new StartCounts();
+        OriginCounts atVertices = new OriginCounts();
         for (TriangleMesh mesh : List.of(sphere, bumpyMesh()))
             checkLeaving(rnd, mesh, new Geometries(mesh, new Sphere(new Point3D(1, 9, 3), 1.5)), 100, true,
                     atVertices, "TC11: " + mesh);
@@ -481,8 +481,8 @@ class BundleGatherTest {
     }
 
     /**
-     * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittance} on a ray from neither start
-     * ({@link ShadowFrustum#setOrigins}): the gather left out the triangles between the starts, and such a
+     * Test method for {@link BoundingVolumeHierarchy#bundleRayTransmittance} on a ray from neither origin
+     * ({@link ShadowFrustum#setOrigins}): the gather left out the triangles between the origins, and such a
      * ray is traced through the whole hierarchy, with exactly the scan's answer, also when a left-out
      * triangle blocks it.
      * <p>
@@ -501,7 +501,7 @@ class BundleGatherTest {
             Point3D c = bundle.c();
             Surface surface = bundle.surface();
             ShadowFrustum frustum = bundle.query().getFrustum();
-            // every triangle of the ridge lies behind both starts and is left out
+            // every triangle of the ridge lies behind both origins and is left out
             for (int t = 0; t < ridge.size(); ++t) {
                 assertTrue(frustum.behindOrigins(ridge.get(t), 0, 3, 6), kind + ": triangle " + t + " behind both");
                 assertFalse(surface.mayMeet(t, frustum), kind + ": triangle " + t + " must be left out");
@@ -513,7 +513,7 @@ class BundleGatherTest {
                     kind + ": the ray along the surface must hit the left-out slope");
 
             // ===== Equivalence Partitions Tests =====
-            // TC01: from p along the surface into the rising slope: start 0 (expects 0, the scan's answer)
+            // TC01: from p along the surface into the rising slope: origin 0 (expects 0, the scan's answer)
             assertEquals(0, frustum.originOf(along[0], along[1], along[2], along[3], along[4], along[5]),
                     "TC01: " + kind + ": a ray from p starts at neither");
             assertEquals(0, bundle.assertAsScan(along, "TC01: " + kind + ": from p along"), 0,
@@ -522,25 +522,25 @@ class BundleGatherTest {
             // scan's)
             assertEquals(0.25, bundle.assertAsScan(rayFromTo(p, new Point3D(10, 0.3, 0.5)),
                     "TC02: " + kind + ": from p up"), 0, "TC02: " + kind + ": only the sphere dims it");
-            // TC03: from p + 0.3n (off both starts) along x, into the slope at x = 2.8 (expects 0, the scan's)
+            // TC03: from p + 0.3n (off both origins) along x, into the slope at x = 2.8 (expects 0, the scan's)
             Point3D off = p.add(UP.scale(0.3));
             assertEquals(0, bundle.assertAsScan(rayFromTo(off, c.add(UP.scale(0.3))),
-                    "TC03: " + kind + ": from off both starts"), 0, "TC03: " + kind + ": the slope blocks it");
-            // TC04: 100 rays from random points off both starts (within 0.1 of p) to the square: the scan's answers
+                    "TC03: " + kind + ": from off both origins"), 0, "TC03: " + kind + ": the slope blocks it");
+            // TC04: 100 rays from random points off both origins (within 0.1 of p) to the square: the scan's answers
             int blocked = 0;
             for (int r = 0; r < 100; ++r) {
                 double[] ray = rayFromTo(stray(rnd, p, Ray.DELTA), squarePoint(rnd, c, bundle.a(), bundle.b()));
-                assertEquals(0, frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]), "TC04: start 0");
-                if (bundle.assertAsScan(ray, "TC04: " + kind + ": from off the starts") == 0)
+                assertEquals(0, frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]), "TC04: origin 0");
+                if (bundle.assertAsScan(ray, "TC04: " + kind + ": from off the origins") == 0)
                     ++blocked;
             }
             assertTrue(blocked >= 5 && blocked <= 95, "TC04: " + kind + ": blocked " + blocked + " of 100");
-            // TC05: rays from the starts, as the renderer traces them: the scan's answers
+            // TC05: rays from the origins, as the renderer traces them: the scan's answers
             for (double[] ray : bundle.shadowRays(rnd, 100))
-                bundle.assertAsScan(ray, "TC05: " + kind + ": from a start");
+                bundle.assertAsScan(ray, "TC05: " + kind + ": from an origin");
 
             // ===== Boundary Values Tests =====
-            // TC11: from p + n exactly along the surface (d·n = 0): start 0, over the ridge, through the
+            // TC11: from p + n exactly along the surface (d·n = 0): origin 0, over the ridge, through the
             // sphere (expects 0.25, the scan's)
             double[] above = rayFromTo(p.add(UP), c.add(UP));
             assertEquals(0, frustum.originOf(above[0], above[1], above[2], above[3], above[4], above[5]),
@@ -552,9 +552,9 @@ class BundleGatherTest {
 
     /**
      * Test method for {@link BoundingVolumeHierarchy#gather} and
-     * {@link BoundingVolumeHierarchy#gatheredTransmittance} with the starts set: a gathered triangle
-     * behind one start only is kept for the rays from the other, and every ray gets exactly the scan's
-     * answer, transparent bodies multiplying; the surface between the starts is left out. The same for
+     * {@link BoundingVolumeHierarchy#bundleRayTransmittance} with the ray origins set: a gathered triangle
+     * behind one origin only is kept for the rays from the other, and every ray gets exactly the scan's
+     * answer, transparent bodies multiplying; the surface between the origins is left out. The same for
      * one mesh and for course-style Triangle objects.
      * <p>
      * The {@link BvhFixtures#shelves} all kT 0.5, and a sphere (8, 0, 0), radius 0.5, kT 0.5, across the surface; the
@@ -573,7 +573,7 @@ class BundleGatherTest {
             Surface surface = bundle.surface();
 
             // ===== Equivalence Partitions Tests =====
-            // TC01: the floor's triangles lie behind both starts (expects left out)
+            // TC01: the floor's triangles lie behind both origins (expects left out)
             for (int t = 0; t < 2; ++t) {
                 assertTrue(frustum.behindOrigins(shelves.get(t), 0, 3, 6), "TC01: " + kind + ": floor behind both");
                 assertFalse(surface.mayMeet(t, frustum), "TC01: " + kind + ": the floor must be left out");
@@ -583,27 +583,27 @@ class BundleGatherTest {
             for (int t = 2; t < shelves.size(); ++t) {
                 double[] v = shelves.get(t);
                 assertEquals(v[2] > 0 ? ShadowFrustum.BELOW : ShadowFrustum.ABOVE, frustum.originsBehind(triangleData(0, v), 0),
-                        "TC02: " + kind + ": shelf triangle " + t + " behind one start");
+                        "TC02: " + kind + ": shelf triangle " + t + " behind one origin");
                 assertFalse(frustum.behindOrigins(v, 0, 3, 6), "TC02: " + kind + ": shelf " + t + " not behind both");
                 assertTrue(surface.mayMeet(t, frustum), "TC02: " + kind + ": shelf " + t + " must be kept");
             }
-            // TC03: 400 rays from the starts to random points of the square, as the renderer traces them: the
-            // scan's answers, exactly; per start some are dimmed twice or more (two shelves, or into and out of
+            // TC03: 400 rays from the origins to random points of the square, as the renderer traces them: the
+            // scan's answers, exactly; per origin some are dimmed twice or more (two shelves, or into and out of
             // the sphere: ≤ 0.25) and some open
             int[] dimmedTwice = new int[3];
             int[] open = new int[3];
             for (double[] ray : bundle.shadowRays(rnd, 400)) {
-                int start = frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]);
-                double answer = bundle.assertAsScan(ray, "TC03: " + kind + ": start " + start);
+                int origin = frustum.originOf(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]);
+                double answer = bundle.assertAsScan(ray, "TC03: " + kind + ": origin " + origin);
                 if (answer <= 0.25)
-                    ++dimmedTwice[start];
+                    ++dimmedTwice[origin];
                 else if (answer == 1)
-                    ++open[start];
+                    ++open[origin];
             }
-            for (int start = ShadowFrustum.ABOVE; start <= ShadowFrustum.BELOW; ++start)
-                assertTrue(dimmedTwice[start] >= 20 && open[start] >= 20, "TC03: " + kind + ": from start " + start
-                        + " too few rays dimmed twice (" + dimmedTwice[start] + ") or open (" + open[start] + ")");
-            // TC04: from p + n through the shelf at 0.3 (x 5) and the one at 0.6 (x 6.67) to (10, 0, 1): start
+            for (int origin = ShadowFrustum.ABOVE; origin <= ShadowFrustum.BELOW; ++origin)
+                assertTrue(dimmedTwice[origin] >= 20 && open[origin] >= 20, "TC03: " + kind + ": from origin " + origin
+                        + " too few rays dimmed twice (" + dimmedTwice[origin] + ") or open (" + open[origin] + ")");
+            // TC04: from p + n through the shelf at 0.3 (x 5) and the one at 0.6 (x 6.67) to (10, 0, 1): origin
             // ABOVE (expects 0.25); its mirror from p − n (expects 0.25)
             double[] up = rayFromTo(p.add(UP), new Point3D(10, 0, 1));
             assertEquals(ShadowFrustum.ABOVE, frustum.originOf(up[0], up[1], up[2], up[3], up[4], up[5]), "TC04");
@@ -616,22 +616,22 @@ class BundleGatherTest {
                     "TC04: " + kind + ": two shelves under the surface");
 
             // ===== Boundary Values Tests =====
-            // TC11: from p + n to the square's lowest edge (10, 0, −2): it leaves to the other side, start 0,
+            // TC11: from p + n to the square's lowest edge (10, 0, −2): it leaves to the other side, origin 0,
             // traced alone through the lower shelves (expects the scan's answer)
             bundle.assertAsScan(rayFromTo(p.add(UP), new Point3D(10, 0, -2)),
                     "TC11: " + kind + ": from p + n downwards");
-            // TC12: the floor alone: every triangle left out behind the starts, yet the bundle is not open, as
-            // a ray from neither start may meet them (expects true, and a ray from a start lets all through)
+            // TC12: the floor alone: every triangle left out behind the origins, yet the bundle is not open, as
+            // a ray from neither origin may meet them (expects true, and a ray from an origin lets all through)
             Surface floor = Surface.of(shelves.subList(0, 2), asMesh, 0.5);
             BoundingVolumeHierarchy floorBvh = BoundingVolumeHierarchy.build(new Geometries(floor.body()));
             Query floorQuery = floorBvh.newQuery();
             int[] floorGathered = gatherLeaving(floorBvh, floorQuery, p, UP, bundle.c(), bundle.a(), bundle.b());
             assertNotNull(floorGathered, "TC12: the pyramid must not be flat");
             assertTrue(floorQuery.getFrustum().leftBehindOrigins(),
-                    "TC12: " + kind + ": the floor between the starts must be left out");
+                    "TC12: " + kind + ": the floor between the origins must be left out");
             assertEquals(1, floorGathered[1], "TC12: " + kind + ": a bundle that left triangles out must not be open");
             assertEquals(1, gatheredRay(floorBvh, floorQuery, up, 0), 0, "TC12: " + kind
-                    + ": a ray from a start over the floor");
+                    + ": a ray from an origin over the floor");
         }
     }
 }

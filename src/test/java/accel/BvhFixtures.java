@@ -51,7 +51,7 @@ import testutil.TestScenes.TestScene;
  * Fixtures of the tests that need the package's own access ({@link ShadowFrustum#originOf},
  * {@link ShadowFrustum#originsBehind}, the builder): builds of the tree's parts, random bundles through
  * scenes, bundles leaving a mesh's surface, and the surfaces of triangles the gather leaves out between a
- * bundle's two starts.
+ * bundle's two ray origins.
  */
 final class BvhFixtures {
     /** Not instantiable. */
@@ -250,16 +250,16 @@ final class BvhFixtures {
 
     /**
      * What the bundles leaving a mesh's surface did: how many of each kind, and how often a gathered
-     * triangle was skipped for a ray by its start.
+     * triangle was skipped for a ray by its origin.
      */
-    static final class StartCounts {
-        /** bundles whose square straddles the tangent plane: the starts set. */
+    static final class OriginCounts {
+        /** bundles whose square straddles the tangent plane: the ray origins set. */
         int straddling;
         /** bundles whose square lies on one side: the back face set. */
         int oneSide;
-        /** straddling bundles that kept at most 32 bodies, some mesh triangle behind a start among them. */
+        /** straddling bundles that kept at most 32 bodies, some mesh triangle behind an origin among them. */
         int straddlingSkipping;
-        /** (ray, gathered triangle) pairs skipped by the start. */
+        /** (ray, gathered triangle) pairs skipped by the origin. */
         int skipped;
         int rays;
         int darkened;
@@ -276,7 +276,7 @@ final class BvhFixtures {
      * the tangent plane (even bundles: beside the point, tilted across the plane) or lying on one side of it (odd
      * bundles: over it, a quarter of them under it). Every ray's gathered transmittance, after the
      * gather as the renderer sets it, equals the scan's transmittance, exactly, with the cut-off and
-     * without, and so does the packet's; and no gathered triangle skipped for a ray by its start is
+     * without, and so does the packet's; and no gathered triangle skipped for a ray by its origin is
      * hit by it.
      *
      * @param rnd    the generator
@@ -289,7 +289,7 @@ final class BvhFixtures {
      * @param tc       the test-case label
      */
     static void checkLeaving(Random rnd, TriangleMesh mesh, BoundingVolumeHierarchy bvh,
-                                     BoundingVolumeHierarchy scan, int bundle, boolean atVertex, StartCounts counts,
+                                     BoundingVolumeHierarchy scan, int bundle, boolean atVertex, OriginCounts counts,
                                      String tc) {
         Query query = bvh.newQuery();
         Query scanQuery = scan.newQuery();
@@ -373,7 +373,7 @@ final class BvhFixtures {
      * @param bundles    how many bundles
      */
     static void checkLeaving(Random rnd, TriangleMesh mesh, Geometries geometries, int bundles,
-                                     boolean atVertex, StartCounts counts, String tc) {
+                                     boolean atVertex, OriginCounts counts, String tc) {
         BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(geometries);
         BoundingVolumeHierarchy scan = BoundingVolumeHierarchy.scan(geometries);
         for (int bundle = 0; bundle < bundles; ++bundle)
@@ -445,7 +445,7 @@ final class BvhFixtures {
     }
 
     /**
-     * A bundle leaving a point p of a surface z = 0 (starts p ± {@link #UP}) to the square centred
+     * A bundle leaving a point p of a surface z = 0 (ray origins p ± {@link #UP}) to the square centred
      * (10, p.y, 0), half-sides (0, 0, h) and (0, h, 0), straddling the surface, gathered over the surface
      * and a sphere (8, p.y, 0), radius 0.5, kT 0.5; the hierarchy of the two and their scan.
      *
@@ -490,7 +490,7 @@ final class BvhFixtures {
         }
 
         /**
-         * The bundle's shadow rays as the renderer traces them ({@link BoundingVolumeHierarchyTest#shadowRays}).
+         * The bundle's shadow rays as the renderer traces them ({@link TestBundles#shadowRays}).
          *
          * @param rnd   the generator
          * @param count the number of rays
@@ -518,7 +518,7 @@ final class BvhFixtures {
         }
     }
 
-    /** The normal of the surfaces z = 0 scaled to DELTA: the starts p ± UP. */
+    /** The normal of the surfaces z = 0 scaled to DELTA: the ray origins p ± UP. */
     static final Vector UP = new Vector(0, 0, Ray.DELTA);
 
     /** {@return the failure messages' name of a surface of one mesh or of Triangle objects} */
@@ -527,7 +527,7 @@ final class BvhFixtures {
     }
 
     /**
-     * A surface along z = 0 with a low ridge, all of it between the starts (0.1 off it): flat over x
+     * A surface along z = 0 with a low ridge, all of it between the origins (0.1 off it): flat over x
      * from −2 to 1, down to −0.05 at x = 2, up to 0.05 at x = 3, back to 0 at x = 4, y from −1 to 2. A
      * ray from (0.5, 0.3, 0) along x crosses the slope up at x = 2.5, inside a triangle.
      *

@@ -243,7 +243,7 @@ class ClosedMeshBlockersTest {
 
     /**
      * Test method for {@link BoundingVolumeHierarchy#blocksBundle} and
-     * {@link BoundingVolumeHierarchy#gatheredTransmittances}: a bundle is said blocked only when the
+     * {@link BoundingVolumeHierarchy#packetTransmittances}: a bundle is said blocked only when the
      * brute-force scan blocks every one of its rays, and in a packet a ray through a closed opaque
      * mesh's core gets exactly the scan's answer.
      */

@@ -88,7 +88,7 @@ class PacketWalkTest {
     }
 
     /**
-     * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittances} and the packet of a
+     * Test method for {@link BoundingVolumeHierarchy#packetTransmittances} and the packet of a
      * {@link Query}: a closed bundle of many bodies, transparent blockers and blockers beyond the
      * light, a bundle that keeps no subtree, an empty packet and a packet of one ray.
      */
@@ -239,7 +239,7 @@ class PacketWalkTest {
     }
 
     /**
-     * Test method for {@link BoundingVolumeHierarchy#gatheredTransmittances} on leaves that mix a
+     * Test method for {@link BoundingVolumeHierarchy#packetTransmittances} on leaves that mix a
      * transparent and an opaque mesh's triangles with other bodies, where some of a leaf's rays are
      * blocked by a body in the middle of the leaf and others go on: each ray's answer is its own.
      */

@@ -47,7 +47,8 @@ class QueryTest {
      */
     @Test
     void testPacket() {
-        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(new Geometries(new Sphere(new Point3D(9, 9, 9), 1)));
+        Geometries aside = new Geometries(new Sphere(new Point3D(9, 9, 9), 1));
+        BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(aside);
         Query query = bvh.newQuery();
         TestBundles.gather(bvh, query, Point3D.ZERO, new Point3D(0, 0, 10), new Vector(1, 0, 0), new Vector(0, 1, 0));
         // ===== Equivalence Partitions Tests =====

@@ -447,28 +447,28 @@ class ShadowFrustumTest {
 
     /**
      * Test method for {@link ShadowFrustum#setLeaving}: a bundle leaving a surface on one side asks for
-     * the back face across n (or −n), one leaving on both sides sets the starts.
+     * the back face across n (or −n), one leaving on both sides sets the ray origins.
      */
     @Test
     void testSetLeaving() {
         // the standard pyramid (apex 0, base (±2, ±2, 10)) leaving the surface z = 0, n = (0, 0, 0.1)
         // ===== Equivalence Partitions Tests =====
-        // TC01: side 1: the back face across n (expects a back face, no starts)
+        // TC01: side 1: the back face across n (expects a back face, no ray origins)
         ShadowFrustum above = standard();
         above.setLeaving(1, 0, 0, -0.1, 0, 0, 0.1);
         assertTrue(above.hasBackFace(), "TC01: leaving on n's side must give a back face");
-        assertFalse(above.hasOrigins(), "TC01: leaving on one side must set no starts");
+        assertFalse(above.hasOrigins(), "TC01: leaving on one side must set no ray origins");
         // TC02: side −1 with n = (0, 0, −0.1): the back face across −n, the base ahead along it (expects
         // a back face)
         ShadowFrustum below = standard();
         below.setLeaving(-1, 0, 0, 0.1, 0, 0, -0.1);
         assertTrue(below.hasBackFace(), "TC02: leaving on the other side must give a back face across −n");
-        // TC03: side 0: the starts p ± n (expects starts, no back face, p + n a start)
+        // TC03: side 0: the ray origins p ± n (expects ray origins, no back face, p + n an origin)
         ShadowFrustum both = standard(0.1);
         both.setLeaving(0, 0, 0, 0, 0, 0, 0.1);
-        assertTrue(both.hasOrigins(), "TC03: leaving on both sides must set the starts");
+        assertTrue(both.hasOrigins(), "TC03: leaving on both sides must set the ray origins");
         assertFalse(both.hasBackFace(), "TC03: leaving on both sides must give no back face");
-        assertEquals(ShadowFrustum.ABOVE, both.originOf(0, 0, 0.1, 0, 0, 1), "TC03: p + n must be a start");
+        assertEquals(ShadowFrustum.ABOVE, both.originOf(0, 0, 0.1, 0, 0, 1), "TC03: p + n must be an origin");
 
         // ===== Boundary Values Tests =====
         // TC11: side 1 with n pointing away from the base: the back face cannot be placed (expects none)
@@ -479,13 +479,13 @@ class ShadowFrustumTest {
 
     /**
      * Test method for {@link ShadowFrustum#setOrigins} and {@link ShadowFrustum#originOf}: a ray from
-     * exactly p + n to n's side starts {@link ShadowFrustum#ABOVE}, one from exactly p − n to the other
+     * exactly p + n to n's side is {@link ShadowFrustum#ABOVE}, one from exactly p − n to the other
      * side {@link ShadowFrustum#BELOW}, any other 0.
      */
     @Test
     void testStartOf() {
         ShadowFrustum frustum = standard(0.1);
-        // p = (1, 2, 3), n = (0, 0.1, 0.1): the starts p + n and p − n as the renderer computes them
+        // p = (1, 2, 3), n = (0, 0.1, 0.1): the ray origins p + n and p − n as the renderer computes them
         double px = 1;
         double py = 2;
         double pz = 3;
@@ -516,20 +516,20 @@ class ShadowFrustumTest {
         assertEquals(0, frustum.originOf(px, Math.nextUp(py + ny), pz + nz, 0, 1, 1), "TC11: y one ulp off p + n");
         assertEquals(0, frustum.originOf(px, py + ny, Math.nextDown(pz + nz), 0, 1, 1), "TC11: z one ulp off p + n");
         assertEquals(0, frustum.originOf(px, py - ny, Math.nextUp(pz - nz), 0, -1, -1), "TC11: z one ulp off p − n");
-        // TC12: a direction along the surface (d·n = 0), from either start: 0
+        // TC12: a direction along the surface (d·n = 0), from either origin: 0
         assertEquals(0, frustum.originOf(px, py + ny, pz + nz, 0, 1, -1), "TC12: along the surface from p + n");
         assertEquals(0, frustum.originOf(px, py - ny, pz - nz, 1, 0, 0), "TC12: along the surface from p − n");
-        // TC13: a new set forgets the starts: 0
+        // TC13: a new set forgets the ray origins: 0
         frustum = standard(0.1);
-        assertEquals(0, frustum.originOf(px, py + ny, pz + nz, 0, 1, 1), "TC13: after a new set no start is known");
-        // TC14: starts never set: 0; set with n = 0: 0 (p + n = p − n = p from either side)
-        assertEquals(0, new ShadowFrustum().originOf(px, py + ny, pz + nz, 0, 1, 1), "TC14: no starts set");
+        assertEquals(0, frustum.originOf(px, py + ny, pz + nz, 0, 1, 1), "TC13: after a new set no origin is known");
+        // TC14: ray origins never set: 0; set with n = 0: 0 (p + n = p − n = p from either side)
+        assertEquals(0, new ShadowFrustum().originOf(px, py + ny, pz + nz, 0, 1, 1), "TC14: no ray origins set");
         frustum.setOrigins(px, py, pz, 0, 0, 0);
-        assertEquals(0, frustum.originOf(px, py, pz, 0, 1, 1), "TC14: a zero offset sets no starts");
+        assertEquals(0, frustum.originOf(px, py, pz, 0, 1, 1), "TC14: a zero offset sets no ray origins");
     }
 
     /**
-     * The starts a triangle lies behind, given by its vertices, its data placed after three zeros.
+     * The ray origins a triangle lies behind, given by its vertices, its data placed after three zeros.
      *
      * @param frustum the frustum
      * @param v       the vertices p1, p2, p3
@@ -550,11 +550,11 @@ class ShadowFrustumTest {
     }
 
     /**
-     * Test method for {@link ShadowFrustum#originsBehind}: which of the starts p ± n a triangle (grown by
+     * Test method for {@link ShadowFrustum#originsBehind}: which of the ray origins p ± n a triangle (grown by
      * the renderer's tolerance) lies behind by more than the rounding margin.
      * <p>
      * The standard pyramid 0.1 thick (margin 2.8e-6, plus the thickness for boxes and faces; the
-     * starts need only the margin), p = (0, 0, 0), n = (0, 0, 0.1): the starts are (0, 0, ±0.1).
+     * origins need only the margin), p = (0, 0, 0), n = (0, 0, 0.1): the ray origins are (0, 0, ±0.1).
      */
     @Test
     void testStartsBehind() {
@@ -563,15 +563,15 @@ class ShadowFrustumTest {
         int both = ShadowFrustum.ABOVE | ShadowFrustum.BELOW;
 
         // ===== Equivalence Partitions Tests =====
-        // TC01: a triangle of the surface (z = 0), between the starts: behind both
-        assertEquals(both, originsBehind(frustum, flat(0)), "TC01: the surface's triangle lies behind both starts");
+        // TC01: a triangle of the surface (z = 0), between the origins: behind both
+        assertEquals(both, originsBehind(frustum, flat(0)), "TC01: the surface's triangle lies behind both origins");
         // TC02: a slanted triangle within the slab (z from −0.05 to 0.05): behind both
         assertEquals(both, originsBehind(frustum, -1, -1, -0.05, 1, -1, -0.05, 0, 1, 0.05),
-                "TC02: a triangle between the starts lies behind both");
+                "TC02: a triangle between the origins lies behind both");
         // TC03: a triangle below p − n (z = −0.5): behind p + n only
-        assertEquals(ShadowFrustum.ABOVE, originsBehind(frustum, flat(-0.5)), "TC03: below both starts: ABOVE");
+        assertEquals(ShadowFrustum.ABOVE, originsBehind(frustum, flat(-0.5)), "TC03: below both origins: ABOVE");
         // TC04: a triangle above p + n (z = 0.5): behind p − n only
-        assertEquals(ShadowFrustum.BELOW, originsBehind(frustum, flat(0.5)), "TC04: above both starts: BELOW");
+        assertEquals(ShadowFrustum.BELOW, originsBehind(frustum, flat(0.5)), "TC04: above both origins: BELOW");
         // TC05: a triangle crossing the surface from z = −1 to 1: behind neither
         assertEquals(0, originsBehind(frustum, -1, -1, -1, 1, -1, -1, 0, 1, 1), "TC05: a crossing triangle: 0");
         // TC06: a triangle crossing only the plane of p + n (z from 0 to 0.2): behind p − n only
@@ -594,17 +594,17 @@ class ShadowFrustumTest {
         assertEquals(ShadowFrustum.ABOVE, originsBehind(frustum, flat(-0.1 + 1e-6)), "TC14: within the margin");
         assertEquals(both, originsBehind(frustum, flat(-0.1 + 1e-5)), "TC14: beyond the margin");
         // TC15: a vertex 1e-4 behind p + n whose edges reach 1e5 down: the renderer's test grows it by
-        // 1e-9 of its two edges, 2e-4 along n, past the start: behind neither (without the growth: ABOVE)
+        // 1e-9 of its two edges, 2e-4 along n, past the origin: behind neither (without the growth: ABOVE)
         assertEquals(0, originsBehind(frustum, 0, 0, 0.1 - 1e-4, 1, 0, -1e5, 0, 1, -1e5),
-                "TC15: a vertex grown past the start");
-        // TC16: no starts set (a fresh set forgets them): 0 for every triangle
+                "TC15: a vertex grown past the origin");
+        // TC16: no ray origins set (a fresh set forgets them): 0 for every triangle
         frustum = standard(0.1);
-        assertEquals(0, originsBehind(frustum, flat(0)), "TC16: no starts after a new set");
-        assertEquals(0, originsBehind(new ShadowFrustum(), flat(-0.5)), "TC16: no starts ever set");
+        assertEquals(0, originsBehind(frustum, flat(0)), "TC16: no ray origins after a new set");
+        assertEquals(0, originsBehind(new ShadowFrustum(), flat(-0.5)), "TC16: no ray origins ever set");
     }
 
     /**
-     * Whether a triangle lies behind both starts, given by its vertices, placed after a dummy vertex
+     * Whether a triangle lies behind both origins, given by its vertices, placed after a dummy vertex
      * (the third first, so the places are used as given).
      *
      * @param frustum the frustum
@@ -618,9 +618,9 @@ class ShadowFrustumTest {
 
     /**
      * Test method for {@link ShadowFrustum#behindOrigins}: true only when a triangle lies behind both
-     * starts p ± n, as {@link ShadowFrustum#originsBehind} tells.
+     * ray origins p ± n, as {@link ShadowFrustum#originsBehind} tells.
      * <p>
-     * The standard pyramid 0.1 thick, p = (0, 0, 0), n = (0, 0, 0.1): the starts are (0, 0, ±0.1).
+     * The standard pyramid 0.1 thick, p = (0, 0, 0), n = (0, 0, 0.1): the ray origins are (0, 0, ±0.1).
      */
     @Test
     void testBehindStarts() {
@@ -628,8 +628,8 @@ class ShadowFrustumTest {
         frustum.setOrigins(0, 0, 0, 0, 0, 0.1);
 
         // ===== Equivalence Partitions Tests =====
-        // TC01: a triangle of the surface (z = 0) between the starts (expects true)
-        assertTrue(behindOrigins(frustum, flat(0)), "TC01: the surface's triangle lies behind both starts");
+        // TC01: a triangle of the surface (z = 0) between the origins (expects true)
+        assertTrue(behindOrigins(frustum, flat(0)), "TC01: the surface's triangle lies behind both origins");
         // TC02: a slanted triangle within the slab (z −0.05..0.05) (expects true)
         assertTrue(behindOrigins(frustum, -1, -1, -0.05, 1, -1, -0.05, 0, 1, 0.05), "TC02: within the slab");
         // TC03: below p − n (z = −0.5), behind p + n only (expects false)
@@ -662,23 +662,23 @@ class ShadowFrustumTest {
                 "TC13: across the slab, beyond the margins");
         assertFalse(behindOrigins(frustum, -1, -1, -0.1 + 1e-6, 1, -1, -0.1 + 1e-5, 0, 1, 0.1 - 1e-5),
                 "TC13: across the slab, one vertex within the margin of p − n");
-        // TC14: no starts ever set, and after a new set (expects false)
-        assertFalse(behindOrigins(new ShadowFrustum(), flat(0)), "TC14: no starts ever set");
+        // TC14: no ray origins ever set, and after a new set (expects false)
+        assertFalse(behindOrigins(new ShadowFrustum(), flat(0)), "TC14: no ray origins ever set");
         frustum = standard(0.1);
-        assertFalse(behindOrigins(frustum, flat(0)), "TC14: a new set forgets the starts");
-        // TC15: starts set with n = 0 (expects false)
+        assertFalse(behindOrigins(frustum, flat(0)), "TC14: a new set forgets the ray origins");
+        // TC15: ray origins set with n = 0 (expects false)
         frustum.setOrigins(0, 0, 0, 0, 0, 0);
-        assertFalse(behindOrigins(frustum, flat(0)), "TC15: a zero offset sets no starts");
+        assertFalse(behindOrigins(frustum, flat(0)), "TC15: a zero offset sets no ray origins");
     }
 
     /**
      * Test method for {@link ShadowFrustum#behindOrigins} against {@link ShadowFrustum#originsBehind}
-     * on seeded random starts and triangles: true exactly when the triangle lies behind both.
+     * on seeded random ray origins and triangles: true exactly when the triangle lies behind both.
      */
     @Test
     void testBehindStartsRandom() {
         // ===== Equivalence Partitions Tests =====
-        // TC01: 200 random starts (p in [−20, 20]³, n of random direction and length 1e-3..1) × 50 random
+        // TC01: 200 random ray origins (p in [−20, 20]³, n of random direction and length 1e-3..1) × 50 random
         // triangles about p (vertices up to 1e-3..10 from p + a random height along n, heights mostly within
         // the slab) (expects behindOrigins == (originsBehind == ABOVE | BELOW) for every triangle)
         Random rnd = new Random(20261203);
@@ -704,14 +704,14 @@ class ShadowFrustumTest {
                 int behind = originsBehind(frustum, v);
                 ++kinds[behind];
                 int number = t;
-                assertEquals(behind == both, behindOrigins(frustum, v), () -> "TC01: starts p " + Arrays.toString(p)
+                assertEquals(behind == both, behindOrigins(frustum, v), () -> "TC01: origins p " + Arrays.toString(p)
                         + " n " + Arrays.toString(n) + ", triangle " + number + " " + Arrays.toString(v)
                         + ": originsBehind " + behind);
             }
         }
         // every answer of originsBehind is common: the comparison is not vacuous
         for (int kind = 0; kind < 4; ++kind)
-            assertTrue(kinds[kind] >= 500, "TC01: too few triangles behind starts " + kind + ": " + kinds[kind]);
+            assertTrue(kinds[kind] >= 500, "TC01: too few triangles behind origins " + kind + ": " + kinds[kind]);
     }
 
     /** Test method for {@link ShadowFrustum#hasOrigins}. */
@@ -721,34 +721,34 @@ class ShadowFrustumTest {
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a new frustum (expects false)
-        assertFalse(frustum.hasOrigins(), "TC01: a new frustum has no starts");
+        assertFalse(frustum.hasOrigins(), "TC01: a new frustum has no ray origins");
         // TC02: after set (expects false)
         assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
                 "TC02: the pyramid must be set");
-        assertFalse(frustum.hasOrigins(), "TC02: set gives no starts");
+        assertFalse(frustum.hasOrigins(), "TC02: set gives no ray origins");
         // TC03: setOrigins with a non-zero n (expects true)
         frustum.setOrigins(1, 2, 3, 0, 0.1, 0);
         assertTrue(frustum.hasOrigins(), "TC03: setOrigins with a non-zero offset");
         // TC04: a new set after setOrigins (expects false)
         assertTrue(frustum.set(new double[] { 0, 0, 0 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
                 "TC04: the pyramid must be set");
-        assertFalse(frustum.hasOrigins(), "TC04: a new set forgets the starts");
+        assertFalse(frustum.hasOrigins(), "TC04: a new set forgets the ray origins");
 
         // ===== Boundary Values Tests =====
         // TC11: setOrigins with n = 0 (expects false), also right after a non-zero n
         frustum.setOrigins(1, 2, 3, 0, 0, 0);
-        assertFalse(frustum.hasOrigins(), "TC11: a zero offset sets no starts");
+        assertFalse(frustum.hasOrigins(), "TC11: a zero offset sets no ray origins");
         frustum.setOrigins(1, 2, 3, 0, 0, -0.1);
-        assertTrue(frustum.hasOrigins(), "TC11: a non-zero offset sets starts");
+        assertTrue(frustum.hasOrigins(), "TC11: a non-zero offset sets ray origins");
         frustum.setOrigins(1, 2, 3, 0, 0, 0);
-        assertFalse(frustum.hasOrigins(), "TC11: a zero offset takes the starts away");
+        assertFalse(frustum.hasOrigins(), "TC11: a zero offset takes the ray origins away");
         // TC12: the smallest non-zero n, one coordinate Double.MIN_VALUE (expects true)
         frustum.setOrigins(1, 2, 3, Double.MIN_VALUE, 0, 0);
-        assertTrue(frustum.hasOrigins(), "TC12: a tiny offset still sets starts");
+        assertTrue(frustum.hasOrigins(), "TC12: a tiny offset still sets ray origins");
         // TC13: a refused (flat) set after setOrigins (expects false)
         assertFalse(frustum.set(new double[] { 0, 0, 10 }, new double[] { 0, 0, 10, 2, 0, 0, 0, 2, 0 }, 0.1),
                 "TC13: the flat pyramid must be refused");
-        assertFalse(frustum.hasOrigins(), "TC13: a refused set forgets the starts too");
+        assertFalse(frustum.hasOrigins(), "TC13: a refused set forgets the ray origins too");
     }
 
     /** Test method for {@link ShadowFrustum#meetsPlane}. */

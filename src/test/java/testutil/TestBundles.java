@@ -171,7 +171,8 @@ public final class TestBundles {
     }
 
     /**
-     * The transmittance of one ray of a bundle after its gather, through gatheredTransmittance.
+     * The transmittance of one ray of a bundle after its gather, through
+     * {@link BoundingVolumeHierarchy#bundleRayTransmittance}.
      *
      * @param bvh    the hierarchy
      * @param ray    the ray (the same one, with the same direction, as the tree's answer is asked for)
@@ -240,7 +241,7 @@ public final class TestBundles {
      * Sets a bundle leaving a surface point as the renderer's light square does (LightSquare.gather):
      * when the square lies on one side of the tangent plane the pyramid starts DELTA off it on that
      * side and gets the back face across the normal; otherwise it starts at the point, DELTA thick,
-     * and the starts p ± n are set; then gathers.
+     * and the ray origins p ± n are set; then gathers.
      *
      * @param bvh   the hierarchy
      * @param query the scratch space
@@ -260,7 +261,7 @@ public final class TestBundles {
     /**
      * Sets a bundle leaving a surface point as the renderer's light square does (LightSquare.gather),
      * for a point on a triangle ({@link #gatherLeaving(BoundingVolumeHierarchy, Query, Point3D, Vector,
-     * Point3D, Vector, Vector)}) or on another body (a plane's, a sphere's: no back face, no starts).
+     * Point3D, Vector, Vector)}) or on another body (a plane's, a sphere's: no back face, no ray origins).
      *
      * @param bvh   the hierarchy
      * @param query the scratch space
