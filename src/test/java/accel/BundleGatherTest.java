@@ -491,7 +491,7 @@ class BundleGatherTest {
      * (10, 0.3, 0), half-sides (0, 0, 1) and (0, 1, 0), which straddles the surface.
      */
     @Test
-    void testRayTransmittanceFromNeitherStart() {
+    void testRayTransmittanceFromNeitherOrigin() {
         Random rnd = new Random(20261204);
         Point3D p = new Point3D(0.5, 0.3, 0);
         List<double[]> ridge = ridge();
@@ -562,7 +562,7 @@ class BundleGatherTest {
      * (0, 0, 2) and (0, 2, 0).
      */
     @Test
-    void testRayTransmittancePerStart() {
+    void testRayTransmittancePerOrigin() {
         Random rnd = new Random(20261205);
         Point3D p = Point3D.ZERO;
         List<double[]> shelves = shelves();

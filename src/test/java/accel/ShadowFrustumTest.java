@@ -483,7 +483,7 @@ class ShadowFrustumTest {
      * side {@link ShadowFrustum#BELOW}, any other 0.
      */
     @Test
-    void testStartOf() {
+    void testOriginOf() {
         ShadowFrustum frustum = standard(0.1);
         // p = (1, 2, 3), n = (0, 0.1, 0.1): the ray origins p + n and p − n as the renderer computes them
         double px = 1;
@@ -557,7 +557,7 @@ class ShadowFrustumTest {
      * origins need only the margin), p = (0, 0, 0), n = (0, 0, 0.1): the ray origins are (0, 0, ±0.1).
      */
     @Test
-    void testStartsBehind() {
+    void testOriginsBehind() {
         ShadowFrustum frustum = standard(0.1);
         frustum.setOrigins(0, 0, 0, 0, 0, 0.1);
         int both = ShadowFrustum.ABOVE | ShadowFrustum.BELOW;
@@ -623,7 +623,7 @@ class ShadowFrustumTest {
      * The standard pyramid 0.1 thick, p = (0, 0, 0), n = (0, 0, 0.1): the ray origins are (0, 0, ±0.1).
      */
     @Test
-    void testBehindStarts() {
+    void testBehindOrigins() {
         ShadowFrustum frustum = standard(0.1);
         frustum.setOrigins(0, 0, 0, 0, 0, 0.1);
 
@@ -676,7 +676,7 @@ class ShadowFrustumTest {
      * on seeded random ray origins and triangles: true exactly when the triangle lies behind both.
      */
     @Test
-    void testBehindStartsRandom() {
+    void testBehindOriginsRandom() {
         // ===== Equivalence Partitions Tests =====
         // TC01: 200 random ray origins (p in [−20, 20]³, n of random direction and length 1e-3..1) × 50 random
         // triangles about p (vertices up to 1e-3..10 from p + a random height along n, heights mostly within
@@ -716,7 +716,7 @@ class ShadowFrustumTest {
 
     /** Test method for {@link ShadowFrustum#hasOrigins}. */
     @Test
-    void testHasStarts() {
+    void testHasOrigins() {
         ShadowFrustum frustum = new ShadowFrustum();
 
         // ===== Equivalence Partitions Tests =====
