@@ -473,8 +473,9 @@ public final class ObjMesh {
         /** Checks a corner, the characters [from, to) of a text: its indices, which slashes separate. */
         private void checkCorner(String text, int from, int to) {
             for (int kind = 0; kind < KEYWORDS.length && from <= to; ++kind) {
-                int slash = text.indexOf('/', from);
-                int indexEnd = slash < 0 || slash > to ? to : slash;
+                int indexEnd = from;
+                while (indexEnd < to && text.charAt(indexEnd) != '/')
+                    ++indexEnd;
                 check(text, from, indexEnd, kind);
                 from = indexEnd + 1;
             }
