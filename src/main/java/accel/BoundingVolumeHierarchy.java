@@ -386,7 +386,9 @@ public final class BoundingVolumeHierarchy {
      * polygons must cross it, a triangle must not lie outside one of its faces (its back face among
      * them) nor behind both of the rays' origins ({@link ShadowFrustum#setOrigins}), and the boxes of
      * bounded ones must meet it. When more than a few of the tree's bodies meet it, their smallest
-     * subtree is kept instead. A brute-force {@link #scan} gathers every body.
+     * subtree is kept instead; so is the subtree the query's last gather kept, at once, when this
+     * gather's walk first branches at its root and finds a body. A brute-force {@link #scan} gathers
+     * every body.
      * <p>
      * Once the first body is gathered, the tree's closed opaque meshes are tried: when one lies across
      * every ray of the bundle, the gather stops, and the bundle is blocked ({@link #blocksBundle});

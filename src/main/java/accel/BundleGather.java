@@ -14,6 +14,12 @@ import java.util.stream.IntStream;
 final class BundleGather {
     /** The places of all gathered bodies, in order. */
     private static final int[] ALL_GATHERED = IntStream.range(0, Query.MAX_GATHERED).toArray();
+    /**
+     * How many gathers in a row may keep the last gather's subtree at once; the next gathers in full, to
+     * check that its bundle still meets too many bodies. Bundles that meet a few bodies after many
+     * would otherwise all walk the subtree as packets, each at the cost of several gathers.
+     */
+    static final int MAX_KEPT = 4;
 
     private final BvhNodes nodes;
     private final LeafBodies bodies;
@@ -53,13 +59,18 @@ final class BundleGather {
         query.originCounts[ShadowFrustum.BELOW] = 0;
         if (nodes.count > 0 && frustum.meetsBox(nodes.bounds, 0))
             gatherTree(query);
+        if (query.gatheredCount >= 0)
+            query.overflowedAt = -1;
         return found > 0 || query.gatheredCount != 0 || query.instanceCount > 0 || bodies.others.length > 0
                 || frustum.leftBehindOrigins() || query.blocked;
     }
 
     /**
      * Walks the nodes whose boxes meet the frustum and gathers the bodies of their leaves, or when
-     * they are too many, the node where the walk first had to enter both children.
+     * they are too many, the node where the walk first had to enter both children. When that node is
+     * where the query's last gather kept its subtree, the bundle most likely meets as many bodies
+     * again (its lit point neighbours the last): the walk only looks for one body, to tell an open
+     * bundle, and keeps the subtree.
      */
     private void gatherTree(Query query) {
         ShadowFrustum frustum = query.frustum;
@@ -70,6 +81,7 @@ final class BundleGather {
         int node = 0;
         int subtree = 0;
         boolean branched = false;
+        boolean predicted = false;
         while (true) {
             int first = links[2 * node];
             int count = links[2 * node + 1];
@@ -80,24 +92,46 @@ final class BundleGather {
                 boolean rightMeets = frustum.meetsBox(bounds, 6 * first + 6);
                 if (leftMeets || rightMeets) {
                     if (leftMeets && rightMeets) {
+                        predicted |= !branched && node == query.overflowedAt && query.keptSince < MAX_KEPT;
                         stack[top++] = first + 1;
                         branched = true;
                     }
                     node = leftMeets ? first : first + 1;
                     continue;
                 }
-            } else if (!gatherLeaf(query, first, count)) {
-                if (!query.blocked) {
-                    query.gatheredCount = -1;
-                    query.instanceCount = 0; // the subtree's walk meets them
-                    query.subtree = subtree;
-                }
+            } else if (predicted ? leafMeets(frustum, first, count) : !gatherLeaf(query, first, count)) {
+                if (!query.blocked)
+                    keepSubtree(query, subtree, predicted);
                 return;
             }
             if (top == 0)
                 return;
             node = stack[--top];
         }
+    }
+
+    /**
+     * Keeps a subtree for the bundle instead of its bodies, unless the closed meshes block it, as
+     * they are tried at the first body found.
+     *
+     * @param predicted whether it is the last gather's subtree, kept at once
+     */
+    private void keepSubtree(Query query, int subtree, boolean predicted) {
+        if (!query.blockersTried && blockers.tryOn(query))
+            return;
+        query.gatheredCount = -1;
+        query.instanceCount = 0; // the subtree's walk meets them
+        query.subtree = subtree;
+        query.overflowedAt = subtree;
+        query.keptSince = predicted ? query.keptSince + 1 : 0;
+    }
+
+    /** {@return whether a body of a leaf may meet the frustum} */
+    private boolean leafMeets(ShadowFrustum frustum, int first, int count) {
+        for (int b = first; b < first + count; ++b)
+            if (bodies.meets(frustum, b))
+                return true;
+        return false;
     }
 
     /**

@@ -56,6 +56,13 @@ public final class Query {
     final int[] originCounts = new int[3];
     /** When the gather found too many bodies: the node below which all of them lie. */
     int subtree;
+    /**
+     * The node whose subtree this query's last gather kept, or −1, and how many gathers in a row kept it
+     * at once: the next gather whose walk first branches there keeps it too, unless
+     * {@link BundleGather#MAX_KEPT} did already.
+     */
+    int overflowedAt = -1;
+    int keptSince;
     /** The unbounded bodies the gather found, and how many. */
     final Geometry[] gatheredUnbounded;
     int unboundedCount;
@@ -99,8 +106,8 @@ public final class Query {
 
     /**
      * Whether the last {@link BoundingVolumeHierarchy#gather} kept a subtree, its bodies too many to
-     * keep one by one: the bundle's rays are then best traced together, by
-     * {@link BoundingVolumeHierarchy#packetTransmittances}.
+     * keep one by one (or those of the gather before, whose subtree it kept again): the bundle's rays
+     * are then best traced together, by {@link BoundingVolumeHierarchy#packetTransmittances}.
      *
      * @return true when a subtree was kept
      */

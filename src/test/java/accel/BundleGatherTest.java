@@ -80,7 +80,8 @@ class BundleGatherTest {
         // Geometry, nested composites, a dense mesh): 60 bundles each from random apexes on (thick), in,
         // near and away from the bodies to random narrow and wide squares, 40 rays each:
         // bundleRayTransmittance = transmittance, 0 or 1, and so is the answer of each ray of the
-        // bundle traced as one packet (packetTransmittances)
+        // bundle traced as one packet (packetTransmittances), also when the bundle kept the subtree of the
+        // bundle before it, whose walk branched at the same node, and it is open only when nothing meets it
         Random rnd = new Random(7031);
         GatherCounts opaque = new GatherCounts();
         for (int s : new int[] { 0, 2, 3, 5, 6, 7, 8, 9, 13, 15, 17, 19 })
@@ -177,6 +178,72 @@ class BundleGatherTest {
         double distance = from.distance(to);
         assertEquals(expected, transmittance(bvh, ray, distance, MIN_K, bvh.newQuery()), 0, message + " (tree)");
         assertEquals(expected, gathered(bvh, ray, distance, MIN_K, query), 0, message + " (gathered)");
+    }
+
+    /**
+     * Test method for {@link BoundingVolumeHierarchy#gather} after a gather that kept a subtree: a bundle
+     * whose walk first branches where that one's did keeps the subtree again, up to
+     * {@link BundleGather#MAX_KEPT} in a row; any other gathers anew.
+     * On the row of 40 triangles, whose root splits it between triangles 19 and 20, under pyramids whose
+     * section at z = 0 covers all 40, triangles 19 and 20 (x ∈ [18.5, 20.5]) or 2 and 3 (x ∈ [1.5, 3.5]).
+     */
+    @Test
+    void testGatherAfterSubtree() {
+        Random rnd = new Random(4019);
+        BoundingVolumeHierarchy rowBvh = BoundingVolumeHierarchy.build(triangleRow());
+        Vector b = new Vector(0, 1, 0);
+        Point3D apexAll = new Point3D(20, 0, 10);
+        Point3D cAll = new Point3D(20, 0, -10);
+        Vector aAll = new Vector(50, 0, 0);
+        Point3D apexMiddle = new Point3D(19.5, 0, 10);
+        Point3D cMiddle = new Point3D(19.5, 0, -10);
+        Point3D apexStart = new Point3D(2.5, 0, 10);
+        Point3D cStart = new Point3D(2.5, 0, -10);
+        Vector aTwo = new Vector(2, 0, 0);
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a new query gathers the 2 triangles under the middle pyramid one by one: true, no subtree
+        Query fresh = rowBvh.newQuery();
+        assertTrue(gather(rowBvh, fresh, apexMiddle, cMiddle, aTwo, b), "TC01: triangles 19 and 20 must be gathered");
+        assertFalse(fresh.isSubtreeGathered(), "TC01: 2 triangles are kept one by one");
+        // TC02: after the pyramid over all 40 (a subtree kept at the root), the middle pyramid, which
+        // branches at the root too: true, the subtree kept again, and its rays agree with the tree, those
+        // through triangles 19 and 20 blocked and those beside them open
+        Query query = rowBvh.newQuery();
+        assertTrue(gather(rowBvh, query, apexAll, cAll, aAll, b), "TC02: 40 triangles must be gathered");
+        assertTrue(query.isSubtreeGathered(), "TC02: 40 triangles make a subtree");
+        assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC02: triangles 19 and 20 must be gathered");
+        assertTrue(query.isSubtreeGathered(), "TC02: the last gather's subtree is kept again");
+        assertBundle(rowBvh, query, apexMiddle, cMiddle, aTwo, b, 0, rnd, "TC02");
+        for (int i = 19; i <= 20; ++i) {
+            assertRay(0, rowBvh, query, apexMiddle, new Point3D(2 * i - 19.5, 0, -10), "TC02: through triangle " + i);
+            assertRay(1, rowBvh, query, apexMiddle, new Point3D(2 * i - 18.5, 0, -10), "TC02: past triangle " + i);
+        }
+        // TC03: then the pyramid over triangles 2 and 3, which branches below the root: gathered one by
+        // one; and after it the middle pyramid is gathered one by one again
+        assertTrue(gather(rowBvh, query, apexStart, cStart, aTwo, b), "TC03: triangles 2 and 3 must be gathered");
+        assertFalse(query.isSubtreeGathered(), "TC03: a walk branching elsewhere gathers anew");
+        assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC03: triangles 19 and 20 must be gathered");
+        assertFalse(query.isSubtreeGathered(), "TC03: no subtree kept since the last gather's");
+
+        // ===== Boundary Values Tests =====
+        // TC11: after a subtree, a pyramid beside the row: false, and it is forgotten: the middle pyramid
+        // is gathered one by one
+        assertTrue(gather(rowBvh, query, apexAll, cAll, aAll, b), "TC11: 40 triangles must be gathered");
+        assertFalse(gather(rowBvh, query, new Point3D(20, 5, 10), new Point3D(20, 5, -10), aAll, b),
+                "TC11: a pyramid beside the row must give false");
+        assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC11: triangles 19 and 20 must be gathered");
+        assertFalse(query.isSubtreeGathered(), "TC11: an open bundle forgets the subtree");
+        // TC12: after a subtree, the middle pyramid keeps it MAX_KEPT (4) times in a row, then gathers in
+        // full, its 2 triangles one by one
+        assertTrue(gather(rowBvh, query, apexAll, cAll, aAll, b), "TC12: 40 triangles must be gathered");
+        for (int k = 1; k <= BundleGather.MAX_KEPT; ++k) {
+            assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC12: triangles 19 and 20, time " + k);
+            assertTrue(query.isSubtreeGathered(), "TC12: the subtree kept again, time " + k);
+        }
+        assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC12: triangles 19 and 20 must be gathered");
+        assertFalse(query.isSubtreeGathered(), "TC12: gathered in full after " + BundleGather.MAX_KEPT + " kept");
+        assertBundle(rowBvh, query, apexMiddle, cMiddle, aTwo, b, 0, rnd, "TC12");
     }
 
     /**

@@ -82,6 +82,11 @@ final class BvhFixtures {
         int few;
         /** gather gave true, more than 32 of the tree's bodies may meet the frustum: a subtree is kept. */
         int subtree;
+        /**
+         * gather gave true, at most 32 of the tree's bodies may meet the frustum, but its walk first
+         * branched where the last gather's kept a subtree: that subtree is kept again.
+         */
+        int kept;
         /** bundles whose pyramid meets some boxes but no polygon's plane among them. */
         int planeCulled;
         /** bundles with a thickness (apex on a body's surface). */
@@ -156,6 +161,8 @@ final class BvhFixtures {
                 ++counts.none;
             } else if (meeting > MAX_GATHERED)
                 ++counts.subtree;
+            else if (query.isSubtreeGathered())
+                ++counts.kept;
             else
                 ++counts.few;
             if (thickness > 0)
@@ -209,6 +216,7 @@ final class BvhFixtures {
         assertTrue(counts.none >= 30, tc + ": too few bundles with nothing gathered (" + counts.none + ")");
         assertTrue(counts.few >= 100, tc + ": too few bundles with a few bodies gathered (" + counts.few + ")");
         assertTrue(counts.subtree >= 50, tc + ": too few bundles meeting more than 32 boxes (" + counts.subtree + ")");
+        assertTrue(counts.kept >= 5, tc + ": too few bundles keeping the last gather's subtree (" + counts.kept + ")");
         assertTrue(counts.thick >= 100, tc + ": too few thick bundles (" + counts.thick + ")");
         assertTrue(counts.planeCulled >= 10, tc + ": too few bundles whose polygons were culled by their planes ("
                 + counts.planeCulled + ")");
