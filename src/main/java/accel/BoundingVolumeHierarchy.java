@@ -287,8 +287,10 @@ public final class BoundingVolumeHierarchy {
      */
     private boolean gatherCarried(Query query, ShadowFrustum frustum, double[] toBody, double[] toWorld) {
         MappedFrustum mapping = query.mapping;
-        if (!mapping.holds(frustum, toBody))
+        if (!mapping.holds(frustum, toBody)) {
+            query.forgetLastGather(); // the query serves every instance of the body, in every tile
             query.carriedMeets = !mapping.set(query.frustum, frustum, toBody, toWorld) || bundleGather.gather(query);
+        }
         return query.carriedMeets;
     }
 

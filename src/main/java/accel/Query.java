@@ -127,6 +127,16 @@ public final class Query {
         return gatheredCount < 0 || instanceCount > 0;
     }
 
+    /**
+     * Forgets the subtree the last {@link BoundingVolumeHierarchy#gather} kept, which the next gather
+     * could keep again at once: the next gathers then depend on no earlier one. A renderer calls it at
+     * the start of every tile, so that a picture does not depend on the tiles a thread rendered before
+     * (through the order in which the {@code kT} of several bodies multiply).
+     */
+    public void forgetLastGather() {
+        overflowedAt = -1;
+    }
+
     /** Empties the packet of rays {@link BoundingVolumeHierarchy#packetTransmittances} traces. */
     public void clearPacket() {
         packet.size = 0;

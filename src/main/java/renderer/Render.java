@@ -392,6 +392,7 @@ public class Render {
             int y0 = (tile / tilesX) * TILE;
             int x1 = Math.min(x0 + TILE, nX);
             int y1 = Math.min(y0 + TILE, nY);
+            tracer.threadState().startTile(); // the thread's last tile must not shape this one's shadows
             for (int i = y0; i < y1; ++i)
                 for (int j = x0; j < x1; ++j)
                     imageWriter.writePixel(j, i, renderPixel(j, i));

@@ -148,6 +148,15 @@ final class ThreadState {
     }
 
     /**
+     * Starts a tile of pixels: the query forgets what its last gather kept ({@link Query#forgetLastGather}),
+     * so the tile's pixels depend on nothing rendered before.
+     */
+    void startTile() {
+        if (query != null)
+            query.forgetLastGather();
+    }
+
+    /**
      * Scratch space for queries on a hierarchy, reused while the hierarchy stays the same.
      *
      * @param bvh the hierarchy

@@ -1,5 +1,6 @@
 package accel;
 
+import static accel.BvhFixtures.IDENTITY_MAP;
 import static accel.BvhFixtures.UP;
 import static accel.BvhFixtures.assertCounts;
 import static accel.BvhFixtures.bumpyMesh;
@@ -15,6 +16,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.BruteForce.MIN_K;
 import static testutil.BruteForce.transmittance;
 import static testutil.TestBundles.MAX_GATHERED;
+import static testutil.TestBundles.ROW_ALL;
+import static testutil.TestBundles.ROW_MIDDLE;
+import static testutil.TestBundles.ROW_START;
 import static testutil.TestBundles.THICK;
 import static testutil.TestBundles.boxesMeeting;
 import static testutil.TestBundles.gather;
@@ -37,6 +41,7 @@ import static testutil.TestScenes.perpendicular;
 import static testutil.TestScenes.randomScene;
 import static testutil.TestScenes.setKt;
 import static testutil.TestScenes.triangle;
+import static testutil.TestScenes.triangleRow;
 
 import java.util.List;
 import java.util.Random;
@@ -58,6 +63,7 @@ import geometries.TriangleMesh;
 import primitives.Point3D;
 import primitives.Ray;
 import primitives.Vector;
+import testutil.TestBundles.Pyramid;
 import testutil.TestScenes.TestScene;
 import testutil.TestScenes.Wrapper;
 
@@ -112,19 +118,6 @@ class BundleGatherTest {
         }
         assertTrue(mesh.few >= 50 && mesh.subtree >= 20 && mesh.none >= 20, "TC03: too few bundles of each kind ("
                 + mesh.none + " none, " + mesh.few + " few, " + mesh.subtree + " subtrees)");
-    }
-
-    /**
-     * A row of 40 small triangles at z = 0, triangle i around (i, 0, 0) (x from i − 0.1 to i + 0.1,
-     * y from −0.1 to 0.1).
-     *
-     * @return the composite
-     */
-    private static Geometries triangleRow() {
-        Geometries row = new Geometries();
-        for (int i = 0; i < 40; ++i)
-            row.add(new Triangle(new Point3D(i - 0.1, -0.1, 0), new Point3D(i + 0.1, -0.1, 0), new Point3D(i, 0.1, 0)));
-        return row;
     }
 
     /**
@@ -183,67 +176,68 @@ class BundleGatherTest {
     /**
      * Test method for {@link BoundingVolumeHierarchy#gather} after a gather that kept a subtree: a bundle
      * whose walk first branches where that one's did keeps the subtree again, up to
-     * {@link BundleGather#MAX_KEPT} in a row; any other gathers anew.
-     * On the row of 40 triangles, whose root splits it between triangles 19 and 20, under pyramids whose
-     * section at z = 0 covers all 40, triangles 19 and 20 (x ∈ [18.5, 20.5]) or 2 and 3 (x ∈ [1.5, 3.5]).
+     * {@link BundleGather#MAX_KEPT} in a row; any other gathers anew. On the row of 40 triangles
+     * ({@code triangleRow}) under the pyramids over all of them, over triangles 19 and 20 (across the
+     * root's split) and over triangles 2 and 3.
      */
     @Test
     void testGatherAfterSubtree() {
         Random rnd = new Random(4019);
         BoundingVolumeHierarchy rowBvh = BoundingVolumeHierarchy.build(triangleRow());
-        Vector b = new Vector(0, 1, 0);
-        Point3D apexAll = new Point3D(20, 0, 10);
-        Point3D cAll = new Point3D(20, 0, -10);
-        Vector aAll = new Vector(50, 0, 0);
-        Point3D apexMiddle = new Point3D(19.5, 0, 10);
-        Point3D cMiddle = new Point3D(19.5, 0, -10);
-        Point3D apexStart = new Point3D(2.5, 0, 10);
-        Point3D cStart = new Point3D(2.5, 0, -10);
-        Vector aTwo = new Vector(2, 0, 0);
+        Pyramid middle = ROW_MIDDLE;
 
         // ===== Equivalence Partitions Tests =====
         // TC01: a new query gathers the 2 triangles under the middle pyramid one by one: true, no subtree
         Query fresh = rowBvh.newQuery();
-        assertTrue(gather(rowBvh, fresh, apexMiddle, cMiddle, aTwo, b), "TC01: triangles 19 and 20 must be gathered");
+        assertTrue(middle.gather(rowBvh, fresh), "TC01: triangles 19 and 20 must be gathered");
         assertFalse(fresh.isSubtreeGathered(), "TC01: 2 triangles are kept one by one");
         // TC02: after the pyramid over all 40 (a subtree kept at the root), the middle pyramid, which
         // branches at the root too: true, the subtree kept again, and its rays agree with the tree, those
         // through triangles 19 and 20 blocked and those beside them open
         Query query = rowBvh.newQuery();
-        assertTrue(gather(rowBvh, query, apexAll, cAll, aAll, b), "TC02: 40 triangles must be gathered");
+        assertTrue(ROW_ALL.gather(rowBvh, query), "TC02: 40 triangles must be gathered");
         assertTrue(query.isSubtreeGathered(), "TC02: 40 triangles make a subtree");
-        assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC02: triangles 19 and 20 must be gathered");
+        assertTrue(middle.gather(rowBvh, query), "TC02: triangles 19 and 20 must be gathered");
         assertTrue(query.isSubtreeGathered(), "TC02: the last gather's subtree is kept again");
-        assertBundle(rowBvh, query, apexMiddle, cMiddle, aTwo, b, 0, rnd, "TC02");
+        assertBundle(rowBvh, query, middle.apex(), middle.c(), middle.a(), middle.b(), 0, rnd, "TC02");
         for (int i = 19; i <= 20; ++i) {
-            assertRay(0, rowBvh, query, apexMiddle, new Point3D(2 * i - 19.5, 0, -10), "TC02: through triangle " + i);
-            assertRay(1, rowBvh, query, apexMiddle, new Point3D(2 * i - 18.5, 0, -10), "TC02: past triangle " + i);
+            assertRay(0, rowBvh, query, middle.apex(), new Point3D(2 * i - 19.5, 0, -10), "TC02: through triangle " + i);
+            assertRay(1, rowBvh, query, middle.apex(), new Point3D(2 * i - 18.5, 0, -10), "TC02: past triangle " + i);
         }
         // TC03: then the pyramid over triangles 2 and 3, which branches below the root: gathered one by
         // one; and after it the middle pyramid is gathered one by one again
-        assertTrue(gather(rowBvh, query, apexStart, cStart, aTwo, b), "TC03: triangles 2 and 3 must be gathered");
+        assertTrue(ROW_START.gather(rowBvh, query), "TC03: triangles 2 and 3 must be gathered");
         assertFalse(query.isSubtreeGathered(), "TC03: a walk branching elsewhere gathers anew");
-        assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC03: triangles 19 and 20 must be gathered");
+        assertTrue(middle.gather(rowBvh, query), "TC03: triangles 19 and 20 must be gathered");
         assertFalse(query.isSubtreeGathered(), "TC03: no subtree kept since the last gather's");
+        // TC04: a subtree, then the middle pyramid carried into the row's space by an identity map (as an
+        // instance carries its bundles): gathered one by one, since a body's tree serves every instance
+        Query shared = rowBvh.threadQuery();
+        assertTrue(ROW_ALL.gather(rowBvh, shared), "TC04: 40 triangles must be gathered");
+        ShadowFrustum carried = rowBvh.newQuery().getFrustum();
+        assertTrue(carried.set(new double[] { 19.5, 0, 10 }, new double[] { 19.5, 0, -10, 2, 0, 0, 0, 1, 0 }, 0),
+                "TC04: the middle pyramid must not be flat");
+        assertTrue(rowBvh.mayMeet(carried, IDENTITY_MAP, IDENTITY_MAP), "TC04: triangles 19 and 20 must be met");
+        assertFalse(shared.isSubtreeGathered(), "TC04: a carried gather keeps no earlier subtree");
 
         // ===== Boundary Values Tests =====
         // TC11: after a subtree, a pyramid beside the row: false, and it is forgotten: the middle pyramid
         // is gathered one by one
-        assertTrue(gather(rowBvh, query, apexAll, cAll, aAll, b), "TC11: 40 triangles must be gathered");
-        assertFalse(gather(rowBvh, query, new Point3D(20, 5, 10), new Point3D(20, 5, -10), aAll, b),
+        assertTrue(ROW_ALL.gather(rowBvh, query), "TC11: 40 triangles must be gathered");
+        assertFalse(gather(rowBvh, query, new Point3D(20, 5, 10), new Point3D(20, 5, -10), ROW_ALL.a(), ROW_ALL.b()),
                 "TC11: a pyramid beside the row must give false");
-        assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC11: triangles 19 and 20 must be gathered");
+        assertTrue(middle.gather(rowBvh, query), "TC11: triangles 19 and 20 must be gathered");
         assertFalse(query.isSubtreeGathered(), "TC11: an open bundle forgets the subtree");
         // TC12: after a subtree, the middle pyramid keeps it MAX_KEPT (4) times in a row, then gathers in
         // full, its 2 triangles one by one
-        assertTrue(gather(rowBvh, query, apexAll, cAll, aAll, b), "TC12: 40 triangles must be gathered");
+        assertTrue(ROW_ALL.gather(rowBvh, query), "TC12: 40 triangles must be gathered");
         for (int k = 1; k <= BundleGather.MAX_KEPT; ++k) {
-            assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC12: triangles 19 and 20, time " + k);
+            assertTrue(middle.gather(rowBvh, query), "TC12: triangles 19 and 20, time " + k);
             assertTrue(query.isSubtreeGathered(), "TC12: the subtree kept again, time " + k);
         }
-        assertTrue(gather(rowBvh, query, apexMiddle, cMiddle, aTwo, b), "TC12: triangles 19 and 20 must be gathered");
+        assertTrue(middle.gather(rowBvh, query), "TC12: triangles 19 and 20 must be gathered");
         assertFalse(query.isSubtreeGathered(), "TC12: gathered in full after " + BundleGather.MAX_KEPT + " kept");
-        assertBundle(rowBvh, query, apexMiddle, cMiddle, aTwo, b, 0, rnd, "TC12");
+        assertBundle(rowBvh, query, middle.apex(), middle.c(), middle.a(), middle.b(), 0, rnd, "TC12");
     }
 
     /**

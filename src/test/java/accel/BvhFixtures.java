@@ -96,7 +96,7 @@ final class BvhFixtures {
     }
 
     /** The identity's 12 numbers, for {@link BoundingVolumeHierarchy#mayMeet(ShadowFrustum, double[], double[])}. */
-    private static final double[] IDENTITY_MAP = primitives.Transform.IDENTITY.toArray();
+    static final double[] IDENTITY_MAP = primitives.Transform.IDENTITY.toArray();
 
     /**
      * Traces random bundles through a scene: for every bundle, every ray from (near) the apex to

@@ -7,6 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.BruteForce.MIN_K;
 import static testutil.TestAssertions.assertMessage;
+import static testutil.TestBundles.ROW_ALL;
+import static testutil.TestBundles.assertForgetsSubtree;
+import static testutil.TestBundles.assertKeepsSubtree;
+import static testutil.TestScenes.triangleRow;
 
 import org.junit.jupiter.api.Test;
 
@@ -126,5 +130,29 @@ class QueryTest {
         assertTrue(TestBundles.gather(bvh, query, new Point3D(n - 1, 0, 10), new Point3D(n - 1, 0, -10),
                 new Vector(2 * n + 2, 0, 0), new Vector(0, 1, 0)), "the bundle must meet the spheres");
         return query;
+    }
+
+    /**
+     * Test method for {@link Query#forgetLastGather()}: the next gather keeps no subtree of an earlier one.
+     * On the row of 40 triangles ({@code triangleRow}), under the pyramid over all of them and the one over
+     * triangles 19 and 20, whose walks both branch at the root.
+     */
+    @Test
+    void testForgetLastGather() {
+        BoundingVolumeHierarchy rowBvh = BoundingVolumeHierarchy.build(triangleRow());
+        Query query = rowBvh.newQuery();
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a subtree kept, then forgotten: the middle pyramid's 2 triangles are gathered one by one
+        assertForgetsSubtree(rowBvh, query, query::forgetLastGather, "TC01");
+        // TC02: a subtree kept and not forgotten: the middle pyramid keeps it again
+        assertKeepsSubtree(rowBvh, query, "TC02");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a new query forgets before any gather: the pyramid over all 40 still keeps a subtree
+        Query fresh = rowBvh.newQuery();
+        fresh.forgetLastGather();
+        assertTrue(ROW_ALL.gather(rowBvh, fresh), "TC11: 40 triangles must be gathered");
+        assertTrue(fresh.isSubtreeGathered(), "TC11: 40 triangles make a subtree");
     }
 }

@@ -6,14 +6,20 @@ import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static testutil.TestBundles.ROW_ALL;
+import static testutil.TestBundles.assertForgetsSubtree;
+import static testutil.TestBundles.assertKeepsSubtree;
+import static testutil.TestScenes.triangleRow;
 
 import org.junit.jupiter.api.Test;
 
+import accel.BoundingVolumeHierarchy;
+import accel.Query;
 import primitives.Color;
 
 /**
- * Unit tests for {@link ThreadState}: a rendering thread's stream, counters, reused sample room and
- * light square.
+ * Unit tests for {@link ThreadState}: a rendering thread's stream, counters, reused sample room, light
+ * square and query, which starts every tile afresh.
  */
 class ThreadStateTest {
 
@@ -128,5 +134,31 @@ class ThreadStateTest {
         // TC11: another thread's state has a light square of its own
         assertNotSame(square, new ThreadState(new SplitMix64(1)).lightSquare(),
                 "TC11: two states must not share a light square");
+    }
+
+    /**
+     * Test method for {@link ThreadState#startTile()}: the thread's query forgets the subtree its last
+     * gather kept, so a tile's pixels depend on no earlier tile. On the row of 40 triangles
+     * ({@code triangleRow}), under the pyramid over all of them and the one over triangles 19 and 20.
+     */
+    @Test
+    void testStartTile() {
+        BoundingVolumeHierarchy rowBvh = BoundingVolumeHierarchy.build(triangleRow());
+
+        // ===== Equivalence Partitions Tests =====
+        // TC01: a subtree kept, then a tile started: the middle pyramid's 2 triangles are gathered one by one
+        ThreadState state = new ThreadState(new SplitMix64(1));
+        Query query = state.query(rowBvh);
+        assertForgetsSubtree(rowBvh, query, state::startTile, "TC01");
+        // TC02: within a tile, the middle pyramid keeps the subtree of the one before
+        assertKeepsSubtree(rowBvh, query, "TC02");
+
+        // ===== Boundary Values Tests =====
+        // TC11: a state without a query starts a tile; its query, made after, keeps the subtree of 40
+        ThreadState unused = new ThreadState(new SplitMix64(2));
+        unused.startTile();
+        Query later = unused.query(rowBvh);
+        assertTrue(ROW_ALL.gather(rowBvh, later), "TC11: 40 triangles must be gathered");
+        assertTrue(later.isSubtreeGathered(), "TC11: 40 triangles make a subtree");
     }
 }

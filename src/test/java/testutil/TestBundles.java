@@ -1,6 +1,7 @@
 package testutil;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static primitives.Util.alignZero;
 import static testutil.BruteForce.MIN_K;
@@ -43,6 +44,67 @@ public final class TestBundles {
 
     /** The most bodies of the tree gather keeps one by one (Query.MAX_GATHERED). */
     public static final int MAX_GATHERED = 32;
+
+    /**
+     * A bundle's pyramid without thickness, from an apex to the square c ± a ± b.
+     *
+     * @param apex the rays' common origin
+     * @param c    the centre of the light's square
+     * @param a    half of one side of the square
+     * @param b    half of the other side
+     */
+    public record Pyramid(Point3D apex, Point3D c, Vector a, Vector b) {
+        /**
+         * Sets the query's frustum to the pyramid and gathers for it.
+         *
+         * @param bvh   the hierarchy
+         * @param query the scratch space
+         * @return what {@link BoundingVolumeHierarchy#gather} returns
+         */
+        public boolean gather(BoundingVolumeHierarchy bvh, Query query) {
+            return TestBundles.gather(bvh, query, apex, c, a, b);
+        }
+    }
+
+    /** The pyramid over all 40 triangles of {@link TestScenes#triangleRow} (x ∈ [−5, 45] at z = 0): a subtree. */
+    public static final Pyramid ROW_ALL = new Pyramid(new Point3D(20, 0, 10), new Point3D(20, 0, -10),
+            new Vector(50, 0, 0), new Vector(0, 1, 0));
+    /** The pyramid over triangles 19 and 20 of the row (x ∈ [18.5, 20.5]), on both sides of its root's split. */
+    public static final Pyramid ROW_MIDDLE = new Pyramid(new Point3D(19.5, 0, 10), new Point3D(19.5, 0, -10),
+            new Vector(2, 0, 0), new Vector(0, 1, 0));
+    /** The pyramid over triangles 2 and 3 of the row (x ∈ [1.5, 3.5]), on one side of its root's split. */
+    public static final Pyramid ROW_START = new Pyramid(new Point3D(2.5, 0, 10), new Point3D(2.5, 0, -10),
+            new Vector(2, 0, 0), new Vector(0, 1, 0));
+
+    /**
+     * Asserts that a query forgets the subtree its last gather kept: after {@link #ROW_ALL} kept one and
+     * forget ran, {@link #ROW_MIDDLE} is gathered one by one.
+     *
+     * @param rowBvh the hierarchy of {@link TestScenes#triangleRow}
+     * @param query  the query
+     * @param forget what makes it forget
+     * @param tc     the test-case label
+     */
+    public static void assertForgetsSubtree(BoundingVolumeHierarchy rowBvh, Query query, Runnable forget, String tc) {
+        assertTrue(ROW_ALL.gather(rowBvh, query), tc + ": 40 triangles must be gathered");
+        forget.run();
+        assertTrue(ROW_MIDDLE.gather(rowBvh, query), tc + ": triangles 19 and 20 must be gathered");
+        assertFalse(query.isSubtreeGathered(), tc + ": a forgotten subtree is not kept again");
+    }
+
+    /**
+     * Asserts that a query keeps the subtree its last gather kept: after {@link #ROW_ALL}, {@link #ROW_MIDDLE}
+     * keeps it again.
+     *
+     * @param rowBvh the hierarchy of {@link TestScenes#triangleRow}
+     * @param query  the query
+     * @param tc     the test-case label
+     */
+    public static void assertKeepsSubtree(BoundingVolumeHierarchy rowBvh, Query query, String tc) {
+        assertTrue(ROW_ALL.gather(rowBvh, query), tc + ": 40 triangles must be gathered");
+        assertTrue(ROW_MIDDLE.gather(rowBvh, query), tc + ": triangles 19 and 20 must be gathered");
+        assertTrue(query.isSubtreeGathered(), tc + ": the last subtree is kept again");
+    }
 
     /**
      * Sets the query's frustum to a bundle's pyramid, without thickness, and gathers for it.

@@ -436,6 +436,19 @@ public final class TestScenes {
     }
 
     /**
+     * A row of 40 small triangles at z = 0, triangle i around (i, 0, 0) (x from i − 0.1 to i + 0.1,
+     * y from −0.1 to 0.1): its hierarchy's root splits it between triangles 19 and 20.
+     *
+     * @return the composite
+     */
+    public static Geometries triangleRow() {
+        Geometries row = new Geometries();
+        for (int i = 0; i < 40; ++i)
+            row.add(new Triangle(new Point3D(i - 0.1, -0.1, 0), new Point3D(i + 0.1, -0.1, 0), new Point3D(i, 0.1, 0)));
+        return row;
+    }
+
+    /**
      * Composites without a body: an empty one, and one of empty composites.
      *
      * @return new composites
