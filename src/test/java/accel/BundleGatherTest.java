@@ -29,6 +29,7 @@ import static testutil.TestBundles.pointOnTriangle;
 import static testutil.TestBundles.rayFromTo;
 import static testutil.TestBundles.rayState;
 import static testutil.TestBundles.rayTransmittance;
+import static testutil.TestBundles.setPyramid;
 import static testutil.TestBundles.shadowRays;
 import static testutil.TestBundles.squarePoint;
 import static testutil.TestBundles.stray;
@@ -215,8 +216,7 @@ class BundleGatherTest {
         Query shared = rowBvh.threadQuery();
         assertTrue(ROW_ALL.gather(rowBvh, shared), "TC04: 40 triangles must be gathered");
         ShadowFrustum carried = rowBvh.newQuery().getFrustum();
-        assertTrue(carried.set(new double[] { 19.5, 0, 10 }, new double[] { 19.5, 0, -10, 2, 0, 0, 0, 1, 0 }, 0),
-                "TC04: the middle pyramid must not be flat");
+        assertTrue(middle.set(carried), "TC04: the middle pyramid must not be flat");
         assertTrue(rowBvh.mayMeet(carried, IDENTITY_MAP, IDENTITY_MAP), "TC04: triangles 19 and 20 must be met");
         assertFalse(shared.isSubtreeGathered(), "TC04: a carried gather keeps no earlier subtree");
 
@@ -522,9 +522,7 @@ class BundleGatherTest {
             // the same pyramid without the back face
             Point3D apex = p.add(n);
             Point3D base = c.add(n);
-            assertTrue(query.getFrustum().set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
-                    new double[] { base.getX(), base.getY(), base.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(),
-                            b.getY(), b.getZ() }, 0), "TC02: set again");
+            assertTrue(setPyramid(query.getFrustum(), apex, base, a, b, 0), "TC02: set again");
             if (bvh.gather(query))
                 ++withoutBackFace;
         }

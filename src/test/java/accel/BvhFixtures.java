@@ -18,6 +18,7 @@ import static testutil.TestBundles.pointOnTriangle;
 import static testutil.TestBundles.randomHalfSide;
 import static testutil.TestBundles.rayState;
 import static testutil.TestBundles.rayTransmittance;
+import static testutil.TestBundles.setPyramid;
 import static testutil.TestBundles.shadowRays;
 import static testutil.TestBundles.squarePoint;
 import static testutil.TestBundles.stray;
@@ -139,9 +140,7 @@ final class BvhFixtures {
             Vector a = wide ? randomUnit(rnd).scale(3 + 12 * rnd.nextDouble()) : randomHalfSide(rnd);
             Vector b = wide ? randomUnit(rnd).scale(3 + 12 * rnd.nextDouble()) : randomHalfSide(rnd);
             if (a.crossProduct(b).length() < 1e-3 * a.length() * b.length()
-                    || !frustum.set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
-                            new double[] { c.getX(), c.getY(), c.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(),
-                                    b.getY(), b.getZ() }, thickness))
+                    || !setPyramid(frustum, apex, c, a, b, thickness))
                 continue; // a flat pyramid: the renderer walks the tree instead
             int meeting = boxesMeeting(scene.geometries(), frustum);
             if (meeting == 0 && meeting(scene.geometries(), frustum, false) > 0)

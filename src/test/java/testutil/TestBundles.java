@@ -64,6 +64,16 @@ public final class TestBundles {
         public boolean gather(BoundingVolumeHierarchy bvh, Query query) {
             return TestBundles.gather(bvh, query, apex, c, a, b);
         }
+
+        /**
+         * Sets a frustum to the pyramid.
+         *
+         * @param frustum the frustum
+         * @return what {@link ShadowFrustum#set} returns
+         */
+        public boolean set(ShadowFrustum frustum) {
+            return setPyramid(frustum, apex, c, a, b, 0);
+        }
     }
 
     /** The pyramid over all 40 triangles of {@link TestScenes#triangleRow} (x ∈ [−5, 45] at z = 0): a subtree. */
@@ -136,11 +146,25 @@ public final class TestBundles {
      */
     public static boolean gather(BoundingVolumeHierarchy bvh, Query query, Point3D apex, Point3D c, Vector a,
                                   Vector b, double thickness) {
-        assertTrue(query.getFrustum().set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
-                new double[] { c.getX(), c.getY(), c.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(),
-                        b.getZ() }, thickness),
-                "the bundle's pyramid must not be flat");
+        assertTrue(setPyramid(query.getFrustum(), apex, c, a, b, thickness), "the bundle's pyramid must not be flat");
         return bvh.gather(query);
+    }
+
+    /**
+     * Sets a frustum to the pyramid from an apex to the square c ± a ± b.
+     *
+     * @param frustum   the frustum
+     * @param apex      the apex
+     * @param c         the centre of the light's square
+     * @param a         half of one side of the square
+     * @param b         half of the other side
+     * @param thickness how far the rays may stray from the pyramid
+     * @return what {@link ShadowFrustum#set} returns: false for a flat pyramid
+     */
+    public static boolean setPyramid(ShadowFrustum frustum, Point3D apex, Point3D c, Vector a, Vector b,
+                                     double thickness) {
+        return frustum.set(new double[] { apex.getX(), apex.getY(), apex.getZ() }, new double[] { c.getX(), c.getY(),
+                c.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(), b.getZ() }, thickness);
     }
 
     /**
@@ -346,9 +370,7 @@ public final class TestBundles {
         Point3D apex = side == 0 ? p : p.add(n.scale(side));
         Point3D base = side == 0 ? c : c.add(n.scale(side));
         ShadowFrustum frustum = query.getFrustum();
-        if (!frustum.set(new double[] { apex.getX(), apex.getY(), apex.getZ() },
-                new double[] { base.getX(), base.getY(), base.getZ(), a.getX(), a.getY(), a.getZ(), b.getX(), b.getY(),
-                        b.getZ() }, side == 0 ? Ray.DELTA : 0))
+        if (!setPyramid(frustum, apex, base, a, b, side == 0 ? Ray.DELTA : 0))
             return null;
         if (facet && side != 0) {
             frustum.setBackFace(side * n.getX(), side * n.getY(), side * n.getZ());
