@@ -20,6 +20,7 @@ import static testutil.TestBundles.ROW_ALL;
 import static testutil.TestBundles.ROW_MIDDLE;
 import static testutil.TestBundles.ROW_START;
 import static testutil.TestBundles.THICK;
+import static testutil.TestBundles.assertKeepsSubtree;
 import static testutil.TestBundles.boxesMeeting;
 import static testutil.TestBundles.gather;
 import static testutil.TestBundles.gatherLeaving;
@@ -196,10 +197,7 @@ class BundleGatherTest {
         // branches at the root too: true, the subtree kept again, and its rays agree with the tree, those
         // through triangles 19 and 20 blocked and those beside them open
         Query query = rowBvh.newQuery();
-        assertTrue(ROW_ALL.gather(rowBvh, query), "TC02: 40 triangles must be gathered");
-        assertTrue(query.isSubtreeGathered(), "TC02: 40 triangles make a subtree");
-        assertTrue(middle.gather(rowBvh, query), "TC02: triangles 19 and 20 must be gathered");
-        assertTrue(query.isSubtreeGathered(), "TC02: the last gather's subtree is kept again");
+        assertKeepsSubtree(rowBvh, query, "TC02");
         assertBundle(rowBvh, query, middle.apex(), middle.c(), middle.a(), middle.b(), 0, rnd, "TC02");
         for (int i = 19; i <= 20; ++i) {
             assertRay(0, rowBvh, query, middle.apex(), new Point3D(2 * i - 19.5, 0, -10), "TC02: through triangle " + i);
@@ -215,7 +213,7 @@ class BundleGatherTest {
         // instance carries its bundles): gathered one by one, since a body's tree serves every instance
         Query shared = rowBvh.threadQuery();
         assertTrue(ROW_ALL.gather(rowBvh, shared), "TC04: 40 triangles must be gathered");
-        ShadowFrustum carried = rowBvh.newQuery().getFrustum();
+        ShadowFrustum carried = new ShadowFrustum();
         assertTrue(middle.set(carried), "TC04: the middle pyramid must not be flat");
         assertTrue(rowBvh.mayMeet(carried, IDENTITY_MAP, IDENTITY_MAP), "TC04: triangles 19 and 20 must be met");
         assertFalse(shared.isSubtreeGathered(), "TC04: a carried gather keeps no earlier subtree");

@@ -112,6 +112,7 @@ public final class TestBundles {
      */
     public static void assertKeepsSubtree(BoundingVolumeHierarchy rowBvh, Query query, String tc) {
         assertTrue(ROW_ALL.gather(rowBvh, query), tc + ": 40 triangles must be gathered");
+        assertTrue(query.isSubtreeGathered(), tc + ": 40 triangles make a subtree");
         assertTrue(ROW_MIDDLE.gather(rowBvh, query), tc + ": triangles 19 and 20 must be gathered");
         assertTrue(query.isSubtreeGathered(), tc + ": the last subtree is kept again");
     }
