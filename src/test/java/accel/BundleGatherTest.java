@@ -20,6 +20,7 @@ import static testutil.TestBundles.ROW_ALL;
 import static testutil.TestBundles.ROW_MIDDLE;
 import static testutil.TestBundles.ROW_START;
 import static testutil.TestBundles.THICK;
+import static testutil.TestBundles.assertForgetsSubtree;
 import static testutil.TestBundles.assertKeepsSubtree;
 import static testutil.TestBundles.boxesMeeting;
 import static testutil.TestBundles.gather;
@@ -221,11 +222,9 @@ class BundleGatherTest {
         // ===== Boundary Values Tests =====
         // TC11: after a subtree, a pyramid beside the row: false, and it is forgotten: the middle pyramid
         // is gathered one by one
-        assertTrue(ROW_ALL.gather(rowBvh, query), "TC11: 40 triangles must be gathered");
-        assertFalse(gather(rowBvh, query, new Point3D(20, 5, 10), new Point3D(20, 5, -10), ROW_ALL.a(), ROW_ALL.b()),
-                "TC11: a pyramid beside the row must give false");
-        assertTrue(middle.gather(rowBvh, query), "TC11: triangles 19 and 20 must be gathered");
-        assertFalse(query.isSubtreeGathered(), "TC11: an open bundle forgets the subtree");
+        assertForgetsSubtree(rowBvh, query, () -> assertFalse(gather(rowBvh, query, new Point3D(20, 5, 10),
+                new Point3D(20, 5, -10), ROW_ALL.a(), ROW_ALL.b()), "TC11: a pyramid beside the row must give false"),
+                "TC11");
         // TC12: after a subtree, the middle pyramid keeps it MAX_KEPT (4) times in a row, then gathers in
         // full, its 2 triangles one by one
         assertTrue(ROW_ALL.gather(rowBvh, query), "TC12: 40 triangles must be gathered");
