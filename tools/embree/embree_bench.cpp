@@ -19,6 +19,12 @@
 //
 // Modes: "packet": shadow rays in rtcOccluded16 packets (82 = 5 x 16 + 2: six packets a point, the last
 // with 2 valid lanes), coherent context; "single": rtcOccluded1 one at a time. Primary rays: rtcIntersect1.
+//
+// With --rays FILE it renders nothing: it traces the shadow rays of a file, bundle by bundle, in the mode's
+// way (a bundle's rays in packets of 16 in its order, or one at a time), and reports Embree's thread time per
+// ray on exactly those rays and how often its answer differs from the one in the file. The file holds
+// bundles, each an int32 ray count and per ray 8 doubles (origin, unit direction, length, the Java
+// renderer's transmittance), little-endian: the rays the Java renderer traced (tools/embree/README.md).
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -351,8 +357,102 @@ static double median(std::vector<double> v) {
     return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
 }
 
+// The shadow rays of a file: bundle b holds rays [start[b], start[b + 1]).
+struct RayFile {
+    std::vector<double> rays; // 8 a ray: origin, direction, length, the renderer's transmittance
+    std::vector<size_t> start{0};
+
+    size_t count() const { return start.back(); }
+
+    static RayFile read(const char *path) {
+        RayFile f;
+        FILE *in = std::fopen(path, "rb");
+        if (!in) { std::fprintf(stderr, "cannot read %s\n", path); std::exit(1); }
+        int32_t n;
+        while (std::fread(&n, sizeof n, 1, in) == 1) {
+            size_t at = f.rays.size();
+            f.rays.resize(at + 8 * (size_t)n);
+            if (n <= 0 || std::fread(&f.rays[at], sizeof(double), 8 * (size_t)n, in) != 8 * (size_t)n) {
+                std::fprintf(stderr, "%s: a bundle of %d rays cut short\n", path, n);
+                std::exit(1);
+            }
+            f.start.push_back(f.start.back() + n);
+        }
+        std::fclose(in);
+        return f;
+    }
+};
+
+// Traces the file's bundles [from, to); returns how many answers differ from the file's (blocked or not).
+static long long traceBundles(const RayFile &f, RTCScene rs, bool packets, size_t from, size_t to) {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    if (packets) ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    long long differ = 0;
+    alignas(64) RTCRay16 r16;
+    alignas(64) int valid[16];
+    for (size_t b = from; b < to; ++b)
+        for (size_t first = f.start[b]; first < f.start[b + 1]; first += packets ? 16 : 1) {
+            int lanes = (int)std::min<size_t>(packets ? 16 : 1, f.start[b + 1] - first);
+            if (!packets) {
+                const double *v = &f.rays[8 * first];
+                RTCRay r;
+                r.org_x = (float)v[0]; r.org_y = (float)v[1]; r.org_z = (float)v[2];
+                r.dir_x = (float)v[3]; r.dir_y = (float)v[4]; r.dir_z = (float)v[5];
+                r.tnear = 0; r.tfar = (float)v[6]; r.time = 0; r.mask = 0xFFFFFFFF; r.id = 0; r.flags = 0;
+                rtcOccluded1(rs, &ctx, &r);
+                differ += (r.tfar < 0) != (v[7] == 0);
+                continue;
+            }
+            for (int k = 0; k < 16; ++k) {
+                valid[k] = k < lanes ? -1 : 0;
+                const double *v = &f.rays[8 * (first + std::min(k, lanes - 1))];
+                r16.org_x[k] = (float)v[0]; r16.org_y[k] = (float)v[1]; r16.org_z[k] = (float)v[2];
+                r16.dir_x[k] = (float)v[3]; r16.dir_y[k] = (float)v[4]; r16.dir_z[k] = (float)v[5];
+                r16.tnear[k] = 0; r16.tfar[k] = (float)v[6]; r16.time[k] = 0;
+                r16.mask[k] = 0xFFFFFFFF; r16.id[k] = 0; r16.flags[k] = 0;
+            }
+            rtcOccluded16(valid, rs, &ctx, &r16);
+            for (int k = 0; k < lanes; ++k)
+                differ += (r16.tfar[k] < 0) != (f.rays[8 * (first + k) + 7] == 0);
+        }
+    return differ;
+}
+
+// Traces every bundle of a file once on some threads, each taking runs of 64 bundles; returns the differing answers.
+static long long tracePass(const RayFile &f, RTCScene rs, bool packets, int threads) {
+    std::atomic<size_t> next{0};
+    std::atomic<long long> differ{0};
+    std::vector<std::thread> pool;
+    size_t bundles = f.start.size() - 1;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back([&] {
+            for (size_t from; (from = next.fetch_add(64)) < bundles;)
+                differ += traceBundles(f, rs, packets, from, std::min(bundles, from + 64));
+        });
+    for (auto &th : pool) th.join();
+    return differ;
+}
+
+// Times the passes over a file's rays and prints a RAYS line.
+static void timeRayFile(const char *path, const std::string &mode, RTCScene rs, int threads, int warmup, int frames) {
+    RayFile f = RayFile::read(path);
+    std::vector<double> secs;
+    long long differ = 0;
+    for (int p = 0; p < warmup + frames; ++p) {
+        auto t0 = std::chrono::steady_clock::now();
+        differ = tracePass(f, rs, mode == "packet", threads);
+        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (p >= warmup) secs.push_back(s);
+    }
+    double med = median(secs);
+    std::printf("RAYS file=%s mode=%s bundles=%zu rays=%zu median_s=%.4f ns_per_ray_thread_time=%.1f"
+                " answers_differing=%lld\n", path, mode.c_str(), f.start.size() - 1, f.count(), med,
+                threads * med * 1e9 / f.count(), differ);
+}
+
 int main(int argc, char **argv) {
-    std::string sceneName, mode = "packet", image, quality = "medium", spheres = "point";
+    std::string sceneName, mode = "packet", image, quality = "medium", spheres = "point", rayFile;
     int threads = 2, warmup = 5, frames = 5;
     for (int a = 1; a + 1 < argc; a += 2) {
         std::string k = argv[a], v = argv[a + 1];
@@ -364,11 +464,13 @@ int main(int argc, char **argv) {
         else if (k == "--image") image = v;
         else if (k == "--quality") quality = v;
         else if (k == "--spheres") spheres = v;
+        else if (k == "--rays") rayFile = v;
         else { std::fprintf(stderr, "unknown option %s\n", k.c_str()); return 2; }
     }
     if (sceneName.empty() || (mode != "packet" && mode != "single")) {
         std::fprintf(stderr, "usage: embree_bench --scene obj:PATH|S [--mode packet|single] [--threads 2]"
-                             " [--warmup 5] [--frames 5] [--image out.pgm] [--quality low|medium|high] [--spheres point|user]\n");
+                             " [--warmup 5] [--frames 5] [--image out.pgm] [--quality low|medium|high]"
+                             " [--spheres point|user] [--rays FILE]\n");
         return 2;
     }
     Scene sc;
@@ -453,6 +555,12 @@ int main(int argc, char **argv) {
     std::printf("%s: %zu mesh triangles + 2 floor triangles%s, build %.3f s\n", sceneName.c_str(), sc.tris.size() / 3,
                 sc.sphereC.empty() ? "" : spheres == "point" ? " + 3 RTC_GEOMETRY_TYPE_SPHERE_POINT spheres" : " + 3 user-geometry spheres", build);
 
+    if (!rayFile.empty()) {
+        timeRayFile(rayFile.c_str(), mode, rs, threads, warmup, frames);
+        rtcReleaseScene(rs);
+        rtcReleaseDevice(dev);
+        return 0;
+    }
     Renderer r{sc, rs, mode == "packet"};
     r.factor.assign((size_t)SIZE * SIZE, 0);
     r.grey.assign((size_t)SIZE * SIZE, 0);
