@@ -1,7 +1,8 @@
 #!/bin/bash
 # Embree on the shadow rays the Java renderer traces: a scratch worktree of HEAD with traced-rays.patch
 # applied writes each real mesh's traced rays of one frame (one thread) to target/traced-rays/, then
-# embree_bench --rays times Embree's packets and single rays on exactly those rays.
+# embree_bench --rays times Embree's packets and single rays on exactly those rays, and
+# benchmark.RayReplay our single-ray walk on them.
 # Usage: tools/embree/traced-rays.sh MODELS_FOLDER [MESH...]   (from the repository, after
 #        mvn test-compile, mvn dependency:build-classpath -Dmdep.outputFile=cp.txt and tools/embree/build.sh)
 set -e
@@ -24,5 +25,7 @@ for m in $MESHES; do
     "$BENCH" --scene "obj:$MODELS/$m.obj" --mode $mode --threads 2 --warmup 3 --frames 7 \
       --rays "$OUT/$(basename "$m").bin" | grep RAYS
   done
+  java -Xmx8g -cp "target/classes:target/test-classes:$(cat cp.txt)" benchmark.RayReplay --scene "obj:$MODELS/$m.obj" \
+    --rays "$OUT/$(basename "$m").bin" | grep replayed
 done
 git worktree remove --force "$PROBE"
