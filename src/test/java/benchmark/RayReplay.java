@@ -33,6 +33,8 @@ public final class RayReplay {
     private static final int BUNDLES_TAKEN = 64;
     /** Below this transmittance a ray is blocked, as the renderer's {@code MIN_CALC_COLOR_K}. */
     private static final double MIN_K = 0.001;
+    private static final String USAGE = "usage: RayReplay --scene NAME --rays FILE [--warmup N] [--passes N]"
+            + " [--threads N]";
 
     /**
      * The rays of a file.
@@ -74,12 +76,11 @@ public final class RayReplay {
                 case "--warmup" -> warmup = Integer.parseInt(args[a + 1]);
                 case "--passes" -> passes = Integer.parseInt(args[a + 1]);
                 case "--threads" -> threads = Integer.parseInt(args[a + 1]);
-                default -> throw new IllegalArgumentException("unknown option " + args[a]);
+                default -> throw new IllegalArgumentException("unknown option " + args[a] + "; " + USAGE);
             }
         }
-        if (sceneName == null || file == null || args.length % 2 != 0 || passes < 1 || warmup < 0 || threads < 1)
-            throw new IllegalArgumentException("usage: RayReplay --scene NAME --rays FILE [--warmup N] [--passes N]"
-                    + " [--threads N], N ≥ 1 (warm-up passes ≥ 0)");
+        if (sceneName == null || file == null || args.length % 2 != 0 || warmup < 0 || passes < 1 || threads < 1)
+            throw new IllegalArgumentException(USAGE + ", at least 1 pass and 1 thread");
         Scene scene = Benchmark.buildScene(sceneName);
         BoundingVolumeHierarchy bvh = BoundingVolumeHierarchy.build(scene.geometries, threads);
         Rays rays = read(file);
