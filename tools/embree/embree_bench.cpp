@@ -203,6 +203,19 @@ static void sphereOccluded(const RTCOccludedFunctionNArguments *args) {
 }
 
 // ---------------------------------------------------------------- rendering
+// A shadow ray from o along d, as long as tfar, in one ray or in lane k of a packet.
+static void setRay(RTCRay &r, V3 o, V3 d, double tfar) {
+    r.org_x = (float)o.x; r.org_y = (float)o.y; r.org_z = (float)o.z;
+    r.dir_x = (float)d.x; r.dir_y = (float)d.y; r.dir_z = (float)d.z;
+    r.tnear = 0; r.tfar = (float)tfar; r.time = 0; r.mask = 0xFFFFFFFF; r.id = 0; r.flags = 0;
+}
+
+static void setLane(RTCRay16 &r, int k, V3 o, V3 d, double tfar) {
+    r.org_x[k] = (float)o.x; r.org_y[k] = (float)o.y; r.org_z[k] = (float)o.z;
+    r.dir_x[k] = (float)d.x; r.dir_y[k] = (float)d.y; r.dir_z[k] = (float)d.z;
+    r.tnear[k] = 0; r.tfar[k] = (float)tfar; r.time[k] = 0; r.mask[k] = 0xFFFFFFFF; r.id[k] = 0; r.flags[k] = 0;
+}
+
 struct Rng { // splitmix64
     uint64_t s;
     inline double next() {
@@ -240,16 +253,11 @@ struct Renderer {
         };
         auto emit = [&](V3 o, V3 d, double dist) {
             if (packets) {
-                r16.org_x[lane] = (float)o.x; r16.org_y[lane] = (float)o.y; r16.org_z[lane] = (float)o.z;
-                r16.dir_x[lane] = (float)d.x; r16.dir_y[lane] = (float)d.y; r16.dir_z[lane] = (float)d.z;
-                r16.tnear[lane] = 0; r16.tfar[lane] = (float)dist; r16.time[lane] = 0;
-                r16.mask[lane] = 0xFFFFFFFF; r16.id[lane] = 0; r16.flags[lane] = 0;
+                setLane(r16, lane, o, d, dist);
                 if (++lane == 16) { flush(16); lane = 0; }
             } else {
                 RTCRay r;
-                r.org_x = (float)o.x; r.org_y = (float)o.y; r.org_z = (float)o.z;
-                r.dir_x = (float)d.x; r.dir_y = (float)d.y; r.dir_z = (float)d.z;
-                r.tnear = 0; r.tfar = (float)dist; r.time = 0; r.mask = 0xFFFFFFFF; r.id = 0; r.flags = 0;
+                setRay(r, o, d, dist);
                 rtcOccluded1(rs, ctx, &r);
                 unblocked += r.tfar >= 0;
             }
@@ -391,30 +399,27 @@ static long long traceBundles(const RayFile &f, RTCScene rs, bool packets, size_
     long long differ = 0;
     alignas(64) RTCRay16 r16;
     alignas(64) int valid[16];
+    auto origin = [&](size_t r) { return V3{f.rays[8 * r], f.rays[8 * r + 1], f.rays[8 * r + 2]}; };
+    auto direction = [&](size_t r) { return V3{f.rays[8 * r + 3], f.rays[8 * r + 4], f.rays[8 * r + 5]}; };
+    auto blocked = [&](size_t r) { return f.rays[8 * r + 7] == 0; };
     for (size_t b = from; b < to; ++b)
         for (size_t first = f.start[b]; first < f.start[b + 1]; first += packets ? 16 : 1) {
-            int lanes = (int)std::min<size_t>(packets ? 16 : 1, f.start[b + 1] - first);
             if (!packets) {
-                const double *v = &f.rays[8 * first];
                 RTCRay r;
-                r.org_x = (float)v[0]; r.org_y = (float)v[1]; r.org_z = (float)v[2];
-                r.dir_x = (float)v[3]; r.dir_y = (float)v[4]; r.dir_z = (float)v[5];
-                r.tnear = 0; r.tfar = (float)v[6]; r.time = 0; r.mask = 0xFFFFFFFF; r.id = 0; r.flags = 0;
+                setRay(r, origin(first), direction(first), f.rays[8 * first + 6]);
                 rtcOccluded1(rs, &ctx, &r);
-                differ += (r.tfar < 0) != (v[7] == 0);
+                differ += (r.tfar < 0) != blocked(first);
                 continue;
             }
-            for (int k = 0; k < 16; ++k) {
+            int lanes = (int)std::min<size_t>(16, f.start[b + 1] - first);
+            for (int k = 0; k < 16; ++k) { // idle lanes repeat the last ray, so that they hold a valid one
+                size_t r = first + std::min(k, lanes - 1);
                 valid[k] = k < lanes ? -1 : 0;
-                const double *v = &f.rays[8 * (first + std::min(k, lanes - 1))];
-                r16.org_x[k] = (float)v[0]; r16.org_y[k] = (float)v[1]; r16.org_z[k] = (float)v[2];
-                r16.dir_x[k] = (float)v[3]; r16.dir_y[k] = (float)v[4]; r16.dir_z[k] = (float)v[5];
-                r16.tnear[k] = 0; r16.tfar[k] = (float)v[6]; r16.time[k] = 0;
-                r16.mask[k] = 0xFFFFFFFF; r16.id[k] = 0; r16.flags[k] = 0;
+                setLane(r16, k, origin(r), direction(r), f.rays[8 * r + 6]);
             }
             rtcOccluded16(valid, rs, &ctx, &r16);
             for (int k = 0; k < lanes; ++k)
-                differ += (r16.tfar[k] < 0) != (f.rays[8 * (first + k) + 7] == 0);
+                differ += (r16.tfar[k] < 0) != blocked(first + k);
         }
     return differ;
 }

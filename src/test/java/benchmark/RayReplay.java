@@ -6,12 +6,13 @@ import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 
 import accel.BoundingVolumeHierarchy;
 import accel.Query;
+import primitives.Parallel;
 import scene.Scene;
 
 /**
@@ -112,6 +113,7 @@ public final class RayReplay {
         } catch (IOException e) {
             throw new IllegalArgumentException("cannot read the rays of " + file + ": " + e.getMessage(), e);
         }
+        double[] numbers = new double[bytes.capacity() / Double.BYTES]; // more than the rays' numbers
         List<Integer> starts = new ArrayList<>(List.of(0));
         int total = 0;
         while (bytes.hasRemaining()) {
@@ -119,19 +121,15 @@ public final class RayReplay {
             if (count <= 0 || bytes.remaining() < (long) count * RAY_DOUBLES * Double.BYTES)
                 throw new IllegalArgumentException(file + ": bundle " + (starts.size() - 1) + " at byte "
                         + bytes.position() + " is cut short or has no rays");
-            bytes.position(bytes.position() + count * RAY_DOUBLES * Double.BYTES);
-            starts.add(total += count);
+            for (int at = RAY_DOUBLES * total; at < RAY_DOUBLES * (total + count); ++at)
+                numbers[at] = bytes.getDouble();
+            total += count;
+            starts.add(total);
         }
         if (total == 0)
             throw new IllegalArgumentException(file + " holds no rays");
-        double[] numbers = new double[RAY_DOUBLES * total];
-        bytes.rewind();
-        for (int b = 0, r = 0; b < starts.size() - 1; ++b) {
-            bytes.getInt();
-            for (int end = RAY_DOUBLES * starts.get(b + 1); r < end; ++r)
-                numbers[r] = bytes.getDouble();
-        }
-        return new Rays(numbers, starts.stream().mapToInt(Integer::intValue).toArray());
+        return new Rays(Arrays.copyOf(numbers, RAY_DOUBLES * total),
+                starts.stream().mapToInt(Integer::intValue).toArray());
     }
 
     /**
@@ -144,24 +142,10 @@ public final class RayReplay {
      * @return the rays whose answer, blocked or not, is not the file's
      */
     static long replay(BoundingVolumeHierarchy bvh, Rays rays, int threads) {
-        AtomicInteger next = new AtomicInteger();
         AtomicLong differing = new AtomicLong();
-        Thread[] pool = new Thread[threads];
-        for (int t = 0; t < threads; ++t) {
-            pool[t] = new Thread(() -> {
-                Query query = bvh.newQuery();
-                for (int from; (from = next.getAndAdd(BUNDLES_TAKEN)) < rays.bundles(); )
-                    differing.addAndGet(replay(bvh, query, rays, from, Math.min(rays.bundles(), from + BUNDLES_TAKEN)));
-            });
-            pool[t].start();
-        }
-        try {
-            for (Thread thread : pool)
-                thread.join();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while replaying rays", e);
-        }
+        int runs = (rays.bundles() + BUNDLES_TAKEN - 1) / BUNDLES_TAKEN;
+        Parallel.forEach(runs, threads, "replay", run -> differing.addAndGet(replay(bvh, bvh.threadQuery(), rays,
+                run * BUNDLES_TAKEN, Math.min(rays.bundles(), (run + 1) * BUNDLES_TAKEN))));
         return differing.get();
     }
 
