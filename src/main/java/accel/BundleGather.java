@@ -92,7 +92,8 @@ final class BundleGather {
                 boolean rightMeets = frustum.meetsBox(bounds, 6 * first + 6);
                 if (leftMeets || rightMeets) {
                     if (leftMeets && rightMeets) {
-                        predicted |= !branched && node == query.overflowedAt && query.keptSince < MAX_KEPT;
+                        if (!branched) // the first branch: where the last gather may have kept its subtree
+                            predicted = node == query.overflowedAt && query.keptSince < MAX_KEPT;
                         stack[top++] = first + 1;
                         branched = true;
                     }

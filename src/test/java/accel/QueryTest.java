@@ -7,8 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static testutil.BruteForce.MIN_K;
 import static testutil.TestAssertions.assertMessage;
-import static testutil.TestBundles.ROW_ALL;
 import static testutil.TestBundles.assertForgetsSubtree;
+import static testutil.TestBundles.assertGathersRowSubtree;
 import static testutil.TestBundles.assertKeepsSubtree;
 import static testutil.TestScenes.triangleRow;
 
@@ -152,7 +152,6 @@ class QueryTest {
         // TC11: a new query forgets before any gather: the pyramid over all 40 still keeps a subtree
         Query fresh = rowBvh.newQuery();
         fresh.forgetLastGather();
-        assertTrue(ROW_ALL.gather(rowBvh, fresh), "TC11: 40 triangles must be gathered");
-        assertTrue(fresh.isSubtreeGathered(), "TC11: 40 triangles make a subtree");
+        assertGathersRowSubtree(rowBvh, fresh, "TC11");
     }
 }

@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static testutil.TestBundles.ROW_ALL;
 import static testutil.TestBundles.assertForgetsSubtree;
+import static testutil.TestBundles.assertGathersRowSubtree;
 import static testutil.TestBundles.assertKeepsSubtree;
 import static testutil.TestScenes.triangleRow;
 
@@ -158,7 +158,6 @@ class ThreadStateTest {
         ThreadState unused = new ThreadState(new SplitMix64(2));
         unused.startTile();
         Query later = unused.query(rowBvh);
-        assertTrue(ROW_ALL.gather(rowBvh, later), "TC11: 40 triangles must be gathered");
-        assertTrue(later.isSubtreeGathered(), "TC11: 40 triangles make a subtree");
+        assertGathersRowSubtree(rowBvh, later, "TC11");
     }
 }

@@ -103,6 +103,18 @@ public final class TestBundles {
     }
 
     /**
+     * Asserts that {@link #ROW_ALL} gathers the 40 triangles of {@link TestScenes#triangleRow} as a subtree.
+     *
+     * @param rowBvh the hierarchy of {@link TestScenes#triangleRow}
+     * @param query  the query
+     * @param tc     the test-case label
+     */
+    public static void assertGathersRowSubtree(BoundingVolumeHierarchy rowBvh, Query query, String tc) {
+        assertTrue(ROW_ALL.gather(rowBvh, query), tc + ": 40 triangles must be gathered");
+        assertTrue(query.isSubtreeGathered(), tc + ": 40 triangles make a subtree");
+    }
+
+    /**
      * Asserts that a query keeps the subtree its last gather kept: after {@link #ROW_ALL}, {@link #ROW_MIDDLE}
      * keeps it again.
      *
@@ -111,8 +123,7 @@ public final class TestBundles {
      * @param tc     the test-case label
      */
     public static void assertKeepsSubtree(BoundingVolumeHierarchy rowBvh, Query query, String tc) {
-        assertTrue(ROW_ALL.gather(rowBvh, query), tc + ": 40 triangles must be gathered");
-        assertTrue(query.isSubtreeGathered(), tc + ": 40 triangles make a subtree");
+        assertGathersRowSubtree(rowBvh, query, tc);
         assertTrue(ROW_MIDDLE.gather(rowBvh, query), tc + ": triangles 19 and 20 must be gathered");
         assertTrue(query.isSubtreeGathered(), tc + ": the last subtree is kept again");
     }
