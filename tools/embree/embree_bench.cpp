@@ -379,9 +379,9 @@ struct RayFile {
         int32_t n;
         while (std::fread(&n, sizeof n, 1, in) == 1) {
             size_t at = f.rays.size();
-            f.rays.resize(at + 8 * (size_t)n);
+            if (n > 0) f.rays.resize(at + 8 * (size_t)n); // a count read from a damaged file may be negative
             if (n <= 0 || std::fread(&f.rays[at], sizeof(double), 8 * (size_t)n, in) != 8 * (size_t)n) {
-                std::fprintf(stderr, "%s: a bundle of %d rays cut short\n", path, n);
+                std::fprintf(stderr, "%s: a bundle of %d rays is cut short or has no rays\n", path, n);
                 std::exit(1);
             }
             f.start.push_back(f.start.back() + n);
