@@ -1,5 +1,7 @@
 package benchmark;
 
+import static testutil.BruteForce.MIN_K;
+
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -32,8 +34,6 @@ public final class RayReplay {
     static final int RAY_DOUBLES = 8;
     /** The bundles a thread takes at a time. */
     private static final int BUNDLES_TAKEN = 64;
-    /** Below this transmittance a ray is blocked, as the renderer's {@code MIN_CALC_COLOR_K}. */
-    private static final double MIN_K = 0.001;
     private static final String USAGE = "usage: RayReplay --scene NAME --rays FILE [--warmup N] [--passes N]"
             + " [--threads N]";
 
