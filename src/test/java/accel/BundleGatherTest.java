@@ -21,6 +21,7 @@ import static testutil.TestBundles.ROW_MIDDLE;
 import static testutil.TestBundles.ROW_START;
 import static testutil.TestBundles.THICK;
 import static testutil.TestBundles.assertForgetsSubtree;
+import static testutil.TestBundles.assertGathersRowSubtree;
 import static testutil.TestBundles.assertKeepsSubtree;
 import static testutil.TestBundles.boxesMeeting;
 import static testutil.TestBundles.gather;
@@ -213,7 +214,7 @@ class BundleGatherTest {
         // TC04: a subtree, then the middle pyramid carried into the row's space by an identity map (as an
         // instance carries its bundles): gathered one by one, since a body's tree serves every instance
         Query shared = rowBvh.threadQuery();
-        assertTrue(ROW_ALL.gather(rowBvh, shared), "TC04: 40 triangles must be gathered");
+        assertGathersRowSubtree(rowBvh, shared, "TC04");
         ShadowFrustum carried = new ShadowFrustum();
         assertTrue(middle.set(carried), "TC04: the middle pyramid must not be flat");
         assertTrue(rowBvh.mayMeet(carried, IDENTITY_MAP, IDENTITY_MAP), "TC04: triangles 19 and 20 must be met");
@@ -227,7 +228,7 @@ class BundleGatherTest {
                 "TC11");
         // TC12: after a subtree, the middle pyramid keeps it MAX_KEPT (4) times in a row, then gathers in
         // full, its 2 triangles one by one
-        assertTrue(ROW_ALL.gather(rowBvh, query), "TC12: 40 triangles must be gathered");
+        assertGathersRowSubtree(rowBvh, query, "TC12");
         for (int k = 1; k <= BundleGather.MAX_KEPT; ++k) {
             assertTrue(middle.gather(rowBvh, query), "TC12: triangles 19 and 20, time " + k);
             assertTrue(query.isSubtreeGathered(), "TC12: the subtree kept again, time " + k);
